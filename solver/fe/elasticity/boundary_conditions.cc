@@ -1,0 +1,172 @@
+#include "elasticity/boundary_conditions.h"
+
+#include "input/spec_list.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace compliant
+{
+  int boundary_id_of(const std::string &name, const std::map<std::string, int> &boundaries,
+                     const std::string &where)
+  {
+    const auto it = boundaries.find(name);
+    if (it != boundaries.end())
+      return it->second;
+    std::string known;
+    for (const auto &b : boundaries)
+      known += " '" + b.first + "'";
+    throw std::invalid_argument(where + ": unknown boundary '" + name +
+                                "'; the mesh's boundary names are:" +
+                                (known.empty() ? " (none)" : known));
+  }
+
+  template <int dim>
+  dealii::Tensor<1, dim> parse_vector(const std::string &text, const std::string &where)
+  {
+    const auto v = parse_numbers(text, where);
+    if (v.size() != dim && !(dim == 2 && v.size() == 3 && v[2] == 0))
+      throw std::invalid_argument(where + ": expected " + std::to_string(dim) +
+                                  " components, got '" + text + "'");
+    dealii::Tensor<1, dim> t;
+    for (unsigned int d = 0; d < dim; ++d)
+      t[d] = v[d];
+    return t;
+  }
+
+  namespace
+  {
+    int component_index(const std::string &key, int dim, const std::string &where)
+    {
+      if (key == "x")
+        return 0;
+      if (key == "y")
+        return 1;
+      if (key == "z" && dim == 3)
+        return 2;
+      throw std::invalid_argument(where + ": unknown component '" + key + "'; expected x, y" +
+                                  (dim == 3 ? ", z" : ""));
+    }
+  } // namespace
+
+  template <int dim>
+  BoundaryConditions<dim> resolve_boundary_conditions(const CaseParameters             &p,
+                                                      const std::map<std::string, int> &boundaries)
+  {
+    BoundaryConditions<dim> bc;
+    std::map<std::string, std::string> used; // boundary -> entry, to refuse conflicting conditions
+    auto claim = [&](const std::string &name, const std::string &entry) {
+      if (used.count(name))
+        throw std::invalid_argument("Boundary conditions: boundary '" + name + "' appears in both " +
+                                    used[name] + " and " + entry);
+      used[name] = entry;
+    };
+
+    {
+      const std::string where = "Boundary conditions/Clamped";
+      for (const auto &name : split(p.clamped, ','))
+        if (!name.empty())
+          {
+            claim(name, where);
+            bc.clamped.emplace_back(name, boundary_id_of(name, boundaries, where));
+          }
+    }
+    {
+      const std::string where = "Boundary conditions/Displacement";
+      for (const auto &item : parse_spec_list(p.displacement, where))
+        {
+          claim(item.name, where);
+          PrescribedDisplacement<dim> d;
+          d.boundary    = item.name;
+          d.boundary_id = boundary_id_of(item.name, boundaries, where);
+          d.mask.assign(dim, false);
+          d.values.assign(dim, 0.0);
+          if (item.fields.empty())
+            throw std::invalid_argument(where + ": '" + item.name + "' names no component");
+          for (const auto &f : item.fields)
+            {
+              const int  c = component_index(f.key, dim, where);
+              const auto v = parse_numbers(f.value, where);
+              if (v.size() != 1)
+                throw std::invalid_argument(where + ": component '" + f.key + "' of '" +
+                                            item.name + "' expects one number");
+              d.mask[c]   = true;
+              d.values[c] = v[0];
+            }
+          bc.displacements.push_back(d);
+        }
+    }
+    {
+      const std::string where = "Boundary conditions/Rotation";
+      for (const auto &item : parse_spec_list(p.rotation, where))
+        {
+          claim(item.name, where);
+          PrescribedRotation<dim> r;
+          r.boundary    = item.name;
+          r.boundary_id = boundary_id_of(item.name, boundaries, where);
+          if (item.has("angle") == item.has("degrees"))
+            throw std::invalid_argument(where + ": '" + item.name +
+                                        "' needs exactly one of angle=<radians> or degrees=<deg>");
+          for (const auto &f : item.fields)
+            if (f.key != "angle" && f.key != "degrees" && f.key != "center" && f.key != "axis")
+              throw std::invalid_argument(where + ": unknown field '" + f.key + "' of '" +
+                                          item.name + "'; expected angle|degrees, center, axis");
+          r.angle = item.has("angle") ? parse_numbers(item.get("angle"), where).at(0) :
+                                        parse_numbers(item.get("degrees"), where).at(0) * M_PI / 180;
+          const auto c = parse_numbers(item.get("center"), where + " center");
+          if (!(c.size() == (unsigned)dim || (c.size() == 3 && dim == 2)))
+            throw std::invalid_argument(where + ": center of '" + item.name + "' needs " +
+                                        std::to_string(dim) + " coordinates");
+          for (unsigned int d = 0; d < c.size(); ++d)
+            r.center[d] = c[d];
+          r.axis = dealii::Tensor<1, 3>({0., 0., 1.});
+          if (item.has("axis"))
+            {
+              const auto a = parse_numbers(item.get("axis"), where + " axis");
+              if (a.size() != 3)
+                throw std::invalid_argument(where + ": axis of '" + item.name +
+                                            "' needs 3 components");
+              r.axis = dealii::Tensor<1, 3>({a[0], a[1], a[2]});
+              if (r.axis.norm() == 0)
+                throw std::invalid_argument(where + ": axis of '" + item.name + "' is zero");
+              r.axis /= r.axis.norm();
+              if (dim == 2 && std::abs(r.axis[2]) != 1)
+                throw std::invalid_argument(where + ": in 2D the axis must be z (0 0 1)");
+            }
+          bc.rotations.push_back(r);
+        }
+    }
+    {
+      const std::string where = "Loads/Traction";
+      for (const auto &item : parse_spec_list(p.traction, where))
+        {
+          if (item.fields.size() != 1 || !item.fields[0].key.empty())
+            throw std::invalid_argument(where + ": expected 'boundary: fx fy [fz]'");
+          bc.tractions[boundary_id_of(item.name, boundaries, where)] +=
+            parse_vector<dim>(item.fields[0].value, where);
+        }
+    }
+    {
+      const std::string where = "Loads/Total force";
+      for (const auto &item : parse_spec_list(p.total_force, where))
+        {
+          if (item.fields.size() != 1 || !item.fields[0].key.empty())
+            throw std::invalid_argument(where + ": expected 'boundary: Fx Fy [Fz]'");
+          boundary_id_of(item.name, boundaries, where);
+          bc.total_forces[item.name] += parse_vector<dim>(item.fields[0].value, where);
+        }
+    }
+    if (!trim(p.body_force).empty())
+      bc.body_force = parse_vector<dim>(p.body_force, "Loads/Body force");
+    if (!trim(p.gravity).empty())
+      bc.gravity = parse_vector<dim>(p.gravity, "Loads/Gravity");
+    return bc;
+  }
+
+  template BoundaryConditions<2> resolve_boundary_conditions<2>(const CaseParameters &,
+                                                                const std::map<std::string, int> &);
+  template BoundaryConditions<3> resolve_boundary_conditions<3>(const CaseParameters &,
+                                                                const std::map<std::string, int> &);
+  template dealii::Tensor<1, 2> parse_vector<2>(const std::string &, const std::string &);
+  template dealii::Tensor<1, 3> parse_vector<3>(const std::string &, const std::string &);
+} // namespace compliant

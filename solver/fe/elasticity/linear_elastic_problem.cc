@@ -1,0 +1,288 @@
+#include "elasticity/linear_elastic_problem.h"
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include "elasticity/rigid_rotation.h"
+#include "linear_algebra/petsc_linear_solver.h"
+
+#include <sstream>
+
+namespace compliant
+{
+  using namespace dealii;
+
+  template <int dim>
+  LinearElasticProblem<dim>::LinearElasticProblem(const CaseParameters &parameters,
+                                                  const MeshedGeometry &geometry,
+                                                  MPI_Comm              communicator)
+    : parameters(parameters)
+    , geometry(geometry)
+    , communicator(communicator)
+    , triangulation(communicator, Triangulation<dim>::none, false,
+                    parallel::shared::Triangulation<dim>::partition_metis)
+    , dof_handler(triangulation)
+    , thickness(dim == 2 ? parameters.thickness : 1.0)
+  {}
+
+  template <int dim>
+  void LinearElasticProblem<dim>::setup()
+  {
+    Timer timer;
+    if (geometry.dimension != dim)
+      throw std::invalid_argument("Model = " + parameters.model + " needs a " +
+                                  std::to_string(dim) + "D mesh, but '" + parameters.mesh_file +
+                                  "' is " + std::to_string(geometry.dimension) + "D");
+    {
+      GridIn<dim> grid_in;
+      grid_in.attach_triangulation(triangulation);
+      std::istringstream in(geometry.msh_text);
+      grid_in.read_msh(in);
+    }
+    triangulation.refine_global(parameters.global_refinements);
+
+    const unsigned int degree = parameters.element_degree;
+    if (triangulation.all_reference_cells_are_hyper_cube())
+      {
+        fe              = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
+        mapping         = std::make_unique<MappingQ<dim>>(1);
+        quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
+        face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
+      }
+    else if (triangulation.all_reference_cells_are_simplex())
+      {
+        fe              = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
+        mapping         = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
+        quadrature      = std::make_unique<QGaussSimplex<dim>>(degree + 1);
+        face_quadrature = std::make_unique<QGaussSimplex<dim - 1>>(degree + 1);
+      }
+    else
+      throw std::invalid_argument("mesh '" + parameters.mesh_file + "' mixes cell types");
+
+    materials           = assign_materials(parameters.materials, geometry.material_ids,
+                                           parameters.unit_system);
+    boundary_conditions = resolve_boundary_conditions<dim>(parameters, geometry.boundary_ids);
+    if (boundary_conditions.clamped.empty() && boundary_conditions.displacements.empty() &&
+        boundary_conditions.rotations.empty())
+      throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
+                                  "a linear static solve needs the rigid-body motion constrained");
+
+    dof_handler.distribute_dofs(*fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    make_constraints();
+
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator,
+                                               locally_relevant_dofs);
+    system_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+    system_rhs.reinit(locally_owned_dofs, communicator);
+    solution.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
+    statistics.setup_seconds = timer.wall_time();
+  }
+
+  template <int dim>
+  void LinearElasticProblem<dim>::make_constraints()
+  {
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    // First condition wins on shared edges/corners: clamped, then displacement, then rotation.
+    for (const auto &[name, id] : boundary_conditions.clamped)
+      VectorTools::interpolate_boundary_values(*mapping, dof_handler, id,
+                                               Functions::ZeroFunction<dim>(dim), constraints);
+    for (const auto &d : boundary_conditions.displacements)
+      VectorTools::interpolate_boundary_values(*mapping, dof_handler, d.boundary_id,
+                                               Functions::ConstantFunction<dim>(d.values),
+                                               constraints, ComponentMask(d.mask));
+    for (const auto &r : boundary_conditions.rotations)
+      VectorTools::interpolate_boundary_values(*mapping, dof_handler, r.boundary_id,
+                                               RigidRotation<dim>(r.angle, r.center, r.axis),
+                                               constraints);
+    constraints.close();
+  }
+
+  template <int dim>
+  double LinearElasticProblem<dim>::boundary_measure(int boundary_id) const
+  {
+    FEFaceValues<dim> fe_face_values(*mapping, *fe, *face_quadrature, update_JxW_values);
+    double            measure = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && (int)cell->face(f)->boundary_id() == boundary_id)
+            {
+              fe_face_values.reinit(cell, f);
+              for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
+                measure += fe_face_values.JxW(q);
+            }
+    return Utilities::MPI::sum(measure, communicator);
+  }
+
+  template <int dim>
+  std::map<int, Tensor<1, dim>> LinearElasticProblem<dim>::boundary_tractions() const
+  {
+    auto tractions = boundary_conditions.tractions;
+    for (const auto &[name, force] : boundary_conditions.total_forces)
+      {
+        const int id = geometry.boundary_ids.at(name);
+        tractions[id] += force / (boundary_measure(id) * thickness);
+      }
+    return tractions;
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim> LinearElasticProblem<dim>::stress(const SymmetricTensor<2, dim> &strain,
+                                                            const Material &material,
+                                                            double         &sigma_zz) const
+  {
+    const double mu     = material.shear_modulus();
+    double       lambda = material.lame_lambda();
+    if (dim == 2 && parameters.model == "plane stress")
+      lambda = 2 * lambda * mu / (lambda + 2 * mu);
+    const double trace = dealii::trace(strain);
+    sigma_zz = (dim == 2 && parameters.model == "plane strain") ? material.lame_lambda() * trace : 0;
+    return lambda * trace * unit_symmetric_tensor<dim>() + 2 * mu * strain;
+  }
+
+  template <int dim>
+  double LinearElasticProblem<dim>::von_mises(const SymmetricTensor<2, dim> &s, double sigma_zz) const
+  {
+    // Full 3x3 stress; in 2D the out-of-plane shear stresses vanish.
+    double s3[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, sigma_zz}};
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        s3[i][j] = s[i][j];
+    const double a = s3[0][0] - s3[1][1], b = s3[1][1] - s3[2][2], c = s3[2][2] - s3[0][0];
+    return std::sqrt(0.5 * (a * a + b * b + c * c) +
+                     3 * (s3[0][1] * s3[0][1] + s3[1][2] * s3[1][2] + s3[0][2] * s3[0][2]));
+  }
+
+  template <int dim>
+  void LinearElasticProblem<dim>::assemble()
+  {
+    Timer timer;
+    system_matrix = 0;
+    system_rhs    = 0;
+    const auto tractions = boundary_tractions();
+
+    FEValues<dim>     fe_values(*mapping, *fe, *quadrature,
+                            update_gradients | update_values | update_JxW_values);
+    FEFaceValues<dim> fe_face_values(*mapping, *fe, *face_quadrature,
+                                     update_values | update_JxW_values);
+    const FEValuesExtractors::Vector u(0);
+    const unsigned int               n = fe->n_dofs_per_cell();
+    FullMatrix<double>               cell_matrix(n, n);
+    Vector<double>                   cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<SymmetricTensor<2, dim>> eps(n);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_matrix = 0;
+          cell_rhs    = 0;
+          fe_values.reinit(cell);
+          const Material &material = materials.at(cell->material_id());
+          const auto body_force = boundary_conditions.body_force + material.density * boundary_conditions.gravity;
+          for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+            {
+              const double JxW = fe_values.JxW(q) * thickness;
+              for (unsigned int i = 0; i < n; ++i)
+                eps[i] = fe_values[u].symmetric_gradient(i, q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  double           sigma_zz;
+                  const auto       sigma_i = stress(eps[i], material, sigma_zz);
+                  for (unsigned int j = 0; j <= i; ++j)
+                    cell_matrix(i, j) += (sigma_i * eps[j]) * JxW;
+                  cell_rhs(i) += fe_values[u].value(i, q) * body_force * JxW;
+                }
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = i + 1; j < n; ++j)
+              cell_matrix(i, j) = cell_matrix(j, i);
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const auto t = tractions.find(cell->face(f)->boundary_id());
+                if (t == tractions.end())
+                  continue;
+                fe_face_values.reinit(cell, f);
+                for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_rhs(i) += fe_face_values[u].value(i, q) * t->second *
+                                   fe_face_values.JxW(q) * thickness;
+              }
+          cell->get_dof_indices(dofs);
+          constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_matrix,
+                                                 system_rhs);
+        }
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    statistics.assembly_seconds = timer.wall_time();
+  }
+
+  namespace
+  {
+    // Translations and infinitesimal rotations: the kernel of elasticity without supports.
+    template <int dim>
+    class RigidBodyMode : public Function<dim>
+    {
+    public:
+      explicit RigidBodyMode(unsigned int mode) : Function<dim>(dim), mode(mode) {}
+      void vector_value(const Point<dim> &p, Vector<double> &v) const override
+      {
+        v = 0;
+        if (mode < dim)
+          v[mode] = 1;
+        else if (dim == 2)
+          v[0] = -p[1], v[1] = p[0];
+        else
+          {
+            const unsigned int axis = mode - dim, a = (axis + 1) % 3, b = (axis + 2) % 3;
+            v[a] = -p[b];
+            v[b] = p[a];
+          }
+      }
+
+    private:
+      unsigned int mode;
+    };
+  } // namespace
+
+  template <int dim>
+  void LinearElasticProblem<dim>::solve()
+  {
+    Timer timer;
+    std::vector<PETScWrappers::MPI::Vector> modes;
+    if (parameters.solver_method != "direct")
+      for (unsigned int m = 0; m < (dim == 2 ? 3u : 6u); ++m)
+        {
+          modes.emplace_back(locally_owned_dofs, communicator);
+          VectorTools::interpolate(*mapping, dof_handler, RigidBodyMode<dim>(m), modes.back());
+        }
+    PETScWrappers::MPI::Vector x(locally_owned_dofs, communicator);
+    LinearSolverSettings       settings{parameters.solver_method, parameters.solver_tolerance,
+                                  parameters.solver_max_iterations, parameters.petsc_options};
+    statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, modes, settings);
+    constraints.distribute(x);
+    solution = x;
+    statistics.solve_seconds = timer.wall_time();
+  }
+
+  template class LinearElasticProblem<2>;
+  template class LinearElasticProblem<3>;
+} // namespace compliant

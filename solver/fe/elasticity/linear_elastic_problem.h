@@ -1,0 +1,76 @@
+// Linear elasticity on a METIS-partitioned shared triangulation with PETSc matrices:
+// 2D plane stress / plane strain and 3D, quadrilateral/hexahedral or simplex meshes, degree 1-3.
+#pragma once
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include "elasticity/boundary_conditions.h"
+#include "elasticity/material.h"
+#include "input/case_file.h"
+#include "mesh/gmsh_geometry.h"
+
+#include <memory>
+
+namespace compliant
+{
+  struct SolverStatistics
+  {
+    unsigned int iterations = 0;
+    double       setup_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
+  };
+
+  template <int dim>
+  class LinearElasticProblem
+  {
+  public:
+    LinearElasticProblem(const CaseParameters &parameters, const MeshedGeometry &geometry,
+                         MPI_Comm communicator);
+
+    // Builds mesh, DoFs and constraints; every case-file name is checked here, before any
+    // work or output (throws std::invalid_argument).
+    void setup();
+    void assemble();
+    void solve();
+
+    // Stress at a point from the displacement gradient: sigma = lambda tr(eps) I + 2 mu eps
+    // (plane stress uses the reduced lambda). Also returns sigma_zz for von Mises in 2D.
+    dealii::SymmetricTensor<2, dim> stress(const dealii::SymmetricTensor<2, dim> &strain,
+                                           const Material &material, double &sigma_zz) const;
+    double von_mises(const dealii::SymmetricTensor<2, dim> &stress, double sigma_zz) const;
+
+    // Everything the quantities and the output read.
+    const CaseParameters                       &parameters;
+    const MeshedGeometry                       &geometry;
+    MPI_Comm                                    communicator;
+    dealii::parallel::shared::Triangulation<dim> triangulation;
+    std::unique_ptr<dealii::FiniteElement<dim>> fe;
+    std::unique_ptr<dealii::Mapping<dim>>       mapping;
+    std::unique_ptr<dealii::Quadrature<dim>>    quadrature;
+    std::unique_ptr<dealii::Quadrature<dim - 1>> face_quadrature;
+    dealii::DoFHandler<dim>                     dof_handler;
+    dealii::IndexSet                            locally_owned_dofs, locally_relevant_dofs;
+    dealii::AffineConstraints<double>           constraints;
+    std::map<int, Material>                     materials;
+    BoundaryConditions<dim>                     boundary_conditions;
+    double                                      thickness; // 1 in 3D
+
+    dealii::PETScWrappers::MPI::SparseMatrix system_matrix;
+    dealii::PETScWrappers::MPI::Vector       system_rhs;
+    dealii::PETScWrappers::MPI::Vector       solution; // ghosted (locally relevant)
+    SolverStatistics                         statistics;
+
+  private:
+    void make_constraints();
+    // Traction from Loads/Traction and Loads/Total force, per boundary id.
+    std::map<int, dealii::Tensor<1, dim>> boundary_tractions() const;
+    double boundary_measure(int boundary_id) const;
+  };
+} // namespace compliant

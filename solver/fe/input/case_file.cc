@@ -1,0 +1,357 @@
+#include "input/case_file.h"
+
+#include "input/spec_list.h"
+
+#include <fstream>
+#include <sstream>
+
+#ifndef COMPLIANT_SOURCE_DIR
+#  define COMPLIANT_SOURCE_DIR "."
+#endif
+
+namespace compliant
+{
+  using dealii::ParameterHandler;
+  namespace Patterns = dealii::Patterns;
+
+  void declare_case_parameters(ParameterHandler                     &prm,
+                               const std::vector<GeometryParameter> &geometry_parameters)
+  {
+    prm.declare_entry("Model", "plane stress",
+                      Patterns::Selection("plane stress|plane strain|3d"),
+                      "Kinematic model: 2D plane stress (uses Material/Thickness), 2D plane "
+                      "strain, or 3D solid. Must match the dimension of the mesh.");
+    prm.declare_entry("Analysis", "linear static", Patterns::Selection("linear static"),
+                      "Kind of analysis.");
+
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Mesh file", "",
+                        Patterns::Anything(),
+                        "A parametric gmsh .geo file (meshed at run time) or a ready .msh file. "
+                        "Relative paths are looked up next to the case file, then in meshes/.");
+      prm.enter_subsection("Parameters");
+      for (const auto &p : geometry_parameters)
+        prm.declare_entry(p.name, dealii::Utilities::to_string(p.value, 17), Patterns::Double(),
+                          p.help.empty() ? "Geometry parameter of the .geo file." : p.help);
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Discretization");
+    {
+      prm.declare_entry("Element degree", "2", Patterns::Integer(1, 3),
+                        "Polynomial degree of the displacement elements (1 to 3).");
+      prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 8),
+                        "Uniform refinements of the gmsh mesh before solving.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Thickness", "1", Patterns::Double(0),
+                        "Out-of-plane thickness of 2D models; forces and energies are totals "
+                        "over this thickness.");
+      prm.declare_entry("Unit system", "SI", Patterns::Selection("SI|mm-N-MPa"),
+                        "Units of the case. Library materials are stored in SI and converted: "
+                        "mm-N-MPa gives E in MPa, density in t/mm^3.");
+      prm.declare_entry("Materials", "*: steel", Patterns::Anything(),
+                        "Material of each physical body: 'name: library_material [, E=..., "
+                        "nu=..., density=..., yield=...]; ...'. '*' means every body. Library: "
+                        "see the materials table in --help.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    {
+      prm.declare_entry("Clamped", "", Patterns::Anything(),
+                        "Boundaries with all displacement components zero: 'left, right'.");
+      prm.declare_entry("Displacement", "", Patterns::Anything(),
+                        "Prescribed displacement per component: 'right: y=0.1; top: x=0, z=0'. "
+                        "Components not named stay free.");
+      prm.declare_entry("Rotation", "", Patterns::Anything(),
+                        "Prescribed rigid rotation of a boundary: 'right: degrees=1 (or angle=rad), "
+                        "center=x y z, axis=0 0 1'. In 2D the axis is z. The exact rotation is "
+                        "imposed (not its small-angle form).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Loads");
+    {
+      prm.declare_entry("Traction", "", Patterns::Anything(),
+                        "Traction vector (force per area) on boundaries: 'top: 0 -1 0'.");
+      prm.declare_entry("Total force", "", Patterns::Anything(),
+                        "Total force spread uniformly over a boundary: 'right: 0 -1'.");
+      prm.declare_entry("Body force", "", Patterns::Anything(),
+                        "Force per volume on every body: '0 -9.81 0'.");
+      prm.declare_entry("Gravity", "", Patterns::Anything(),
+                        "Acceleration of gravity: body force = density * gravity.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Linear solver");
+    {
+      prm.declare_entry("Method", "cg-amg", Patterns::Selection("cg-amg|direct"),
+                        "cg-amg: conjugate gradients with PETSc GAMG given the rigid-body modes; "
+                        "direct: MUMPS LU.");
+      prm.declare_entry("Relative tolerance", "1e-10", Patterns::Double(0, 1),
+                        "Residual reduction of the iterative solver.");
+      prm.declare_entry("Maximum iterations", "2000", Patterns::Integer(1),
+                        "Iterations before the iterative solver gives up.");
+      prm.declare_entry("PETSc options", "", Patterns::Anything(),
+                        "Extra PETSc options, e.g. '-pc_gamg_threshold 0.02'.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Quantities");
+    {
+      prm.declare_entry("Points", "", Patterns::Anything(),
+                        "Named points for displacement output: 'tip: 48 60; mid: 24 52'. "
+                        "Gives displacement_<name>_<x|y|z>.");
+      prm.declare_entry("Reactions", "", Patterns::Anything(),
+                        "Boundaries whose reaction force and moment are reported, with the moment "
+                        "point (default: origin; rotation-driven boundaries: the rotation "
+                        "center): 'left; right: 100 5 0'.");
+      prm.declare_entry("Mean displacements", "", Patterns::Anything(),
+                        "Boundaries whose average displacement is reported: 'right, top'.");
+      prm.declare_entry("Rotations", "", Patterns::Anything(),
+                        "Boundaries whose best-fit rigid rotation is reported: 'right'.");
+      prm.declare_entry("Derived", "", Patterns::Anything(),
+                        "Quantities computed from others with muparser: "
+                        "'J = reaction_moment_right_x / (G * twist)'. Names of quantities, "
+                        "geometry parameters, E, nu, G and thickness may be used.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Comparison");
+    {
+      prm.declare_entry("Checks", "", Patterns::Anything(),
+                        "Quantities compared with closed forms: "
+                        "'displacement_tip_y ~ timoshenko_cantilever_deflection(P=1, L=L, ...); ...'. "
+                        "Arguments are muparser expressions of geometry parameters, E, nu, G, "
+                        "thickness and quantities. See the closed-form list in --help.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory", "", Patterns::Anything(),
+                        "Where results go; empty: results/<case file name>.");
+      prm.declare_entry("Fields", "true", Patterns::Bool(),
+                        "Write HDF5 + XDMF fields (displacement, strain, stress, von Mises, "
+                        "material and partition id) for ParaView.");
+    }
+    prm.leave_subsection();
+  }
+
+  CommandLine parse_command_line(int argc, char **argv)
+  {
+    CommandLine cl;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+          cl.help = true;
+        else if (arg == "--check")
+          cl.check = true;
+        else if (arg == "--set")
+          {
+            if (i + 1 >= argc)
+              throw InputError("--set needs an argument \"Section/Name=value\"");
+            cl.overrides.emplace_back(argv[++i]);
+          }
+        else if (arg.rfind("--set=", 0) == 0)
+          cl.overrides.push_back(arg.substr(6));
+        else if (!arg.empty() && arg[0] == '-')
+          throw InputError("unknown option '" + arg + "' (known: --help, --check, --set)");
+        else if (cl.case_file.empty())
+          cl.case_file = arg;
+        else
+          throw InputError("more than one case file given: '" + cl.case_file + "' and '" + arg +
+                           "'");
+      }
+    return cl;
+  }
+
+  std::string resolve_mesh_file(const std::string &name, const std::string &case_file)
+  {
+    if (name.empty())
+      return "";
+    if (name[0] == '/')
+      return name;
+    const auto        slash    = case_file.rfind('/');
+    const std::string case_dir = slash == std::string::npos ? "." : case_file.substr(0, slash);
+    for (const std::string &candidate :
+         {case_dir + "/" + name, std::string(COMPLIANT_SOURCE_DIR) + "/meshes/" + name, name})
+      if (std::ifstream(candidate).good())
+        return candidate;
+    return case_dir + "/" + name; // reported as missing later
+  }
+
+  namespace
+  {
+    // Applies "A/B/Name=value" to the handler; names the override on failure.
+    void apply_override(ParameterHandler &prm, const std::string &text, bool ignore_undeclared)
+    {
+      const auto eq = text.find('=');
+      if (eq == std::string::npos)
+        throw InputError("--set \"" + text + "\": expected \"Section/Name=value\"");
+      const std::string path  = trim(text.substr(0, eq));
+      const std::string value = trim(text.substr(eq + 1));
+      auto              parts = split(path, '/');
+      const std::string name  = parts.back();
+      parts.pop_back();
+      unsigned int depth = 0;
+      try
+        {
+          for (const auto &section : parts)
+            {
+              prm.enter_subsection(section);
+              ++depth;
+            }
+          prm.set(name, value);
+        }
+      catch (const std::exception &e)
+        {
+          for (; depth > 0; --depth)
+            prm.leave_subsection();
+          if (ignore_undeclared)
+            return;
+          throw InputError("--set \"" + text + "\": no such parameter, or value not allowed (" +
+                           trim(e.what()).substr(0, 400) + ")");
+        }
+      for (; depth > 0; --depth)
+        prm.leave_subsection();
+    }
+
+    std::string first_lines(const std::string &s)
+    {
+      // deal.II exceptions carry a long banner; the useful part is the "Additional information".
+      const auto pos = s.find("Additional information:");
+      std::string out = pos == std::string::npos ? s : s.substr(pos + 23);
+      const auto  end = out.find("Stacktrace:");
+      if (end != std::string::npos)
+        out = out.substr(0, end);
+      return trim(out);
+    }
+
+    void parse_file(ParameterHandler &prm, const std::string &file, bool skip_undefined)
+    {
+      if (!std::ifstream(file).good())
+        throw InputError("case file '" + file + "' cannot be opened");
+      try
+        {
+          prm.parse_input(file, "", skip_undefined, true);
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError("case file '" + file + "': " + first_lines(e.what()));
+        }
+    }
+  } // namespace
+
+  CaseParameters read_case(const CommandLine &command_line, ParameterHandler &prm)
+  {
+    CaseParameters p;
+    p.case_file = command_line.case_file;
+
+    // Pass 1: only the mesh file matters; it decides which geometry parameters exist.
+    std::vector<GeometryParameter> geometry_parameters;
+    std::string                    mesh_file;
+    if (!p.case_file.empty())
+      {
+        ParameterHandler first_pass;
+        declare_case_parameters(first_pass, {});
+        parse_file(first_pass, p.case_file, true);
+        for (const auto &o : command_line.overrides)
+          apply_override(first_pass, o, true);
+        first_pass.enter_subsection("Geometry");
+        mesh_file = resolve_mesh_file(first_pass.get("Mesh file"), p.case_file);
+        first_pass.leave_subsection();
+        if (mesh_file.empty())
+          throw InputError("case file '" + p.case_file +
+                           "': Geometry/Mesh file is empty; expected a .geo or .msh file");
+        try
+          {
+            geometry_parameters = read_geometry_parameters(mesh_file);
+          }
+        catch (const std::exception &e)
+          {
+            throw InputError("case file '" + p.case_file + "', Geometry/Mesh file: " + e.what());
+          }
+      }
+
+    declare_case_parameters(prm, geometry_parameters);
+    if (p.case_file.empty())
+      return p;
+    parse_file(prm, p.case_file, false);
+    for (const auto &o : command_line.overrides)
+      apply_override(prm, o, false);
+
+    p.model     = prm.get("Model");
+    p.dimension = p.model == "3d" ? 3 : 2;
+    p.analysis  = prm.get("Analysis");
+    p.mesh_file = mesh_file;
+    prm.enter_subsection("Geometry");
+    prm.enter_subsection("Parameters");
+    for (const auto &g : geometry_parameters)
+      p.geometry_parameters[g.name] = prm.get_double(g.name);
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    prm.enter_subsection("Discretization");
+    p.element_degree     = prm.get_integer("Element degree");
+    p.global_refinements = prm.get_integer("Global refinements");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    p.thickness   = prm.get_double("Thickness");
+    p.unit_system = prm.get("Unit system");
+    p.materials   = prm.get("Materials");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    p.clamped      = prm.get("Clamped");
+    p.displacement = prm.get("Displacement");
+    p.rotation     = prm.get("Rotation");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Loads");
+    p.traction    = prm.get("Traction");
+    p.total_force = prm.get("Total force");
+    p.body_force  = prm.get("Body force");
+    p.gravity     = prm.get("Gravity");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Linear solver");
+    p.solver_method         = prm.get("Method");
+    p.solver_tolerance      = prm.get_double("Relative tolerance");
+    p.solver_max_iterations = prm.get_integer("Maximum iterations");
+    p.petsc_options         = prm.get("PETSc options");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Quantities");
+    p.points             = prm.get("Points");
+    p.reactions          = prm.get("Reactions");
+    p.mean_displacements = prm.get("Mean displacements");
+    p.rotations          = prm.get("Rotations");
+    p.derived            = prm.get("Derived");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Comparison");
+    p.checks = prm.get("Checks");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    p.output_directory = prm.get("Directory");
+    p.write_fields     = prm.get_bool("Fields");
+    prm.leave_subsection();
+    if (p.output_directory.empty())
+      {
+        auto stem        = p.case_file.substr(p.case_file.rfind('/') + 1);
+        stem             = stem.substr(0, stem.rfind('.'));
+        p.output_directory = "results/" + stem;
+      }
+    return p;
+  }
+} // namespace compliant

@@ -1,0 +1,74 @@
+// The case file: deal.II ParameterHandler text, declared here once. Everything the user can
+// set, with its documentation and default, comes from these declarations (--help prints them).
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include "mesh/gmsh_geometry.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace compliant
+{
+  // A user error (bad case file, bad option): reported without a stack trace, exit code 2.
+  struct InputError : std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+
+  struct CaseParameters
+  {
+    std::string case_file;
+    std::string model; // "plane stress", "plane strain", "3d"
+    int         dimension = 2;
+    std::string analysis;
+
+    std::string                   mesh_file; // resolved path
+    std::map<std::string, double> geometry_parameters;
+
+    unsigned int element_degree     = 2;
+    unsigned int global_refinements = 0;
+
+    double      thickness = 1.0;
+    std::string unit_system;
+    std::string materials;
+
+    std::string clamped, displacement, rotation;
+    std::string traction, total_force, body_force, gravity;
+
+    std::string solver_method;
+    double      solver_tolerance = 1e-10;
+    unsigned    solver_max_iterations = 1000;
+    std::string petsc_options;
+
+    std::string points, reactions, mean_displacements, rotations, derived;
+    std::string checks;
+
+    std::string output_directory;
+    bool        write_fields = true;
+  };
+
+  // Declares every entry. Geometry parameters of the given .geo file become entries of
+  // "Geometry/Parameters" with the file's defaults and help strings.
+  void declare_case_parameters(dealii::ParameterHandler             &prm,
+                               const std::vector<GeometryParameter> &geometry_parameters);
+
+  struct CommandLine
+  {
+    std::string              case_file;
+    std::vector<std::string> overrides; // "Section/Name=value"
+    bool                     help  = false;
+    bool                     check = false;
+  };
+
+  CommandLine parse_command_line(int argc, char **argv);
+
+  // Reads the case file in two passes (the .geo file decides which geometry parameters exist),
+  // applies --set overrides and validates values. Throws InputError naming file and entry.
+  CaseParameters read_case(const CommandLine &command_line, dealii::ParameterHandler &prm);
+
+  // Where a mesh file named in a case is looked for: next to the case, then meshes/.
+  std::string resolve_mesh_file(const std::string &name, const std::string &case_file);
+} // namespace compliant

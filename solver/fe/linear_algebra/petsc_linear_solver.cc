@@ -1,0 +1,85 @@
+#include "linear_algebra/petsc_linear_solver.h"
+
+#include <petscksp.h>
+
+#include <stdexcept>
+
+namespace compliant
+{
+  namespace
+  {
+    void check(PetscErrorCode ierr, const char *what)
+    {
+      if (ierr != 0)
+        throw std::runtime_error(std::string("PETSc error in ") + what + " (code " +
+                                 std::to_string(ierr) + ")");
+    }
+
+    // MatNullSpaceCreate requires orthonormal vectors.
+    void orthonormalize(std::vector<dealii::PETScWrappers::MPI::Vector> &modes)
+    {
+      for (unsigned int i = 0; i < modes.size(); ++i)
+        {
+          for (unsigned int j = 0; j < i; ++j)
+            modes[i].add(-(modes[i] * modes[j]), modes[j]);
+          modes[i] /= modes[i].l2_norm();
+        }
+    }
+  } // namespace
+
+  unsigned int solve_linear_system(dealii::PETScWrappers::MPI::SparseMatrix        &matrix,
+                                   dealii::PETScWrappers::MPI::Vector              &solution,
+                                   const dealii::PETScWrappers::MPI::Vector        &rhs,
+                                   std::vector<dealii::PETScWrappers::MPI::Vector>  near_null_space,
+                                   const LinearSolverSettings                      &settings)
+  {
+    Mat      A = matrix;
+    MPI_Comm comm = matrix.get_mpi_communicator();
+    KSP      ksp;
+    PC       pc;
+    check(KSPCreate(comm, &ksp), "KSPCreate");
+    check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+    check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    MatNullSpace null_space = nullptr;
+    if (settings.method == "direct")
+      {
+        check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+        check(PCSetType(pc, PCLU), "PCSetType");
+        check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
+      }
+    else
+      {
+        check(KSPSetType(ksp, KSPCG), "KSPSetType");
+        check(PCSetType(pc, PCGAMG), "PCSetType");
+        orthonormalize(near_null_space);
+        std::vector<Vec> vecs;
+        for (auto &v : near_null_space)
+          vecs.push_back(v);
+        check(MatNullSpaceCreate(comm, PETSC_FALSE, vecs.size(), vecs.data(), &null_space),
+              "MatNullSpaceCreate");
+        check(MatSetNearNullSpace(A, null_space), "MatSetNearNullSpace");
+      }
+    check(KSPSetTolerances(ksp, settings.relative_tolerance, 1e-300, PETSC_DEFAULT,
+                           settings.max_iterations),
+          "KSPSetTolerances");
+    if (!settings.petsc_options.empty())
+      check(PetscOptionsInsertString(nullptr, settings.petsc_options.c_str()),
+            "PetscOptionsInsertString (Linear solver/PETSc options)");
+    check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+    Vec x = solution;
+    check(KSPSolve(ksp, rhs, x), "KSPSolve");
+    KSPConvergedReason reason;
+    PetscInt           iterations;
+    KSPGetConvergedReason(ksp, &reason);
+    KSPGetIterationNumber(ksp, &iterations);
+    if (null_space)
+      MatNullSpaceDestroy(&null_space);
+    KSPDestroy(&ksp);
+    if (reason < 0)
+      throw std::runtime_error("linear solver (" + settings.method + ") did not converge: PETSc "
+                               "reason " + std::to_string(reason) + " after " +
+                               std::to_string(iterations) + " iterations; try 'Linear "
+                               "solver/Method = direct' or more iterations");
+    return iterations;
+  }
+} // namespace compliant

@@ -1,0 +1,27 @@
+// Solves K x = f with PETSc: CG + GAMG with the rigid-body modes as near null space (what makes
+// AMG work for elasticity), or MUMPS LU. Raw PETSc because deal.II 9.4 has no GAMG wrapper.
+#pragma once
+
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include <string>
+#include <vector>
+
+namespace compliant
+{
+  struct LinearSolverSettings
+  {
+    std::string method = "cg-amg"; // or "direct"
+    double      relative_tolerance = 1e-10;
+    unsigned    max_iterations     = 2000;
+    std::string petsc_options;
+  };
+
+  // Returns the iteration count; throws std::runtime_error with PETSc's reason on failure.
+  unsigned int solve_linear_system(dealii::PETScWrappers::MPI::SparseMatrix              &matrix,
+                                   dealii::PETScWrappers::MPI::Vector                    &solution,
+                                   const dealii::PETScWrappers::MPI::Vector              &rhs,
+                                   std::vector<dealii::PETScWrappers::MPI::Vector>       near_null_space,
+                                   const LinearSolverSettings                            &settings);
+} // namespace compliant

@@ -1,0 +1,157 @@
+#include "mesh/gmsh_geometry.h"
+
+#include <gmsh.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace compliant
+{
+  namespace
+  {
+    const std::string parameter_prefix = "Parameters/";
+
+    // gmsh keeps global state: one session per call keeps calls independent.
+    struct GmshSession
+    {
+      GmshSession()
+      {
+        gmsh::initialize();
+        gmsh::option::setNumber("General.Terminal", 0);
+        gmsh::option::setNumber("General.Verbosity", 1);
+      }
+      ~GmshSession() { gmsh::finalize(); }
+    };
+
+    bool file_exists(const std::string &file)
+    {
+      std::ifstream in(file);
+      return in.good();
+    }
+
+    void open_or_throw(const std::string &file)
+    {
+      if (!file_exists(file))
+        throw std::runtime_error("geometry file '" + file + "' does not exist");
+      try
+        {
+          gmsh::open(file);
+        }
+      catch (const std::exception &e)
+        {
+          throw std::runtime_error("gmsh could not read '" + file + "': " + e.what());
+        }
+      catch (...)
+        {
+          throw std::runtime_error("gmsh could not read '" + file + "'");
+        }
+    }
+
+    // The ONELAB JSON has "help":"..."; a full JSON parser is not worth it for one field.
+    std::string help_of(const std::string &name)
+    {
+      std::string json;
+      gmsh::onelab::get(json, name);
+      const std::string key = "\"help\":\"";
+      const auto        pos = json.find(key);
+      if (pos == std::string::npos)
+        return "";
+      const auto end = json.find('"', pos + key.size());
+      return json.substr(pos + key.size(), end - pos - key.size());
+    }
+  } // namespace
+
+  std::vector<GeometryParameter> read_geometry_parameters(const std::string &file)
+  {
+    GmshSession session;
+    open_or_throw(file);
+    std::vector<std::string> names;
+    gmsh::onelab::getNames(names, parameter_prefix + ".*");
+    std::vector<GeometryParameter> parameters;
+    for (const auto &full_name : names)
+      {
+        std::vector<double> value;
+        gmsh::onelab::getNumber(full_name, value);
+        if (value.empty())
+          continue; // a string parameter: not ours
+        parameters.push_back(
+          {full_name.substr(parameter_prefix.size()), value[0], help_of(full_name)});
+      }
+    return parameters;
+  }
+
+  MeshedGeometry mesh_geometry(const std::string &file,
+                               const std::map<std::string, double> &parameters)
+  {
+    GmshSession session;
+    for (const auto &[name, value] : parameters)
+      gmsh::onelab::setNumber(parameter_prefix + name, {value});
+    open_or_throw(file);
+
+    MeshedGeometry result;
+    result.dimension = gmsh::model::getDimension();
+    if (result.dimension < 2)
+      throw std::runtime_error("geometry file '" + file + "' has no surface or volume");
+
+    const bool is_geo = file.size() > 4 && file.substr(file.size() - 4) == ".geo";
+    if (is_geo)
+      {
+        try
+          {
+            gmsh::model::mesh::generate(result.dimension);
+          }
+        catch (...)
+          {
+            throw std::runtime_error("gmsh failed to mesh '" + file + "'");
+          }
+      }
+
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups);
+    for (const auto &[dim, tag] : groups)
+      {
+        std::string name;
+        gmsh::model::getPhysicalName(dim, tag, name);
+        if (name.empty())
+          name = std::to_string(tag); // unnamed groups are addressed by number
+        if (dim == result.dimension - 1)
+          result.boundary_ids[name] = tag;
+        else if (dim == result.dimension)
+          result.material_ids[name] = tag;
+      }
+    if (result.material_ids.empty())
+      throw std::runtime_error("geometry file '" + file + "' has no physical group of dimension " +
+                               std::to_string(result.dimension) +
+                               ": name the body (e.g. Physical Surface(\"body\") = {...};)");
+
+    std::vector<int>                      types;
+    std::vector<std::vector<std::size_t>> tags, nodes;
+    gmsh::model::mesh::getElements(types, tags, nodes, result.dimension);
+    for (const auto &t : tags)
+      result.n_cells += t.size();
+    if (types.size() > 1)
+      throw std::runtime_error("geometry file '" + file +
+                               "' mixes element types; use all quadrilaterals/hexahedra "
+                               "(Recombine + Transfinite) or all triangles/tetrahedra");
+
+    // Gmsh 2.2 ASCII through a private temporary file; the text is what the ranks share.
+    char tmp_name[] = "/tmp/compliant-mesh-XXXXXX.msh";
+    const int fd    = mkstemps(tmp_name, 4);
+    if (fd < 0)
+      throw std::runtime_error("cannot create a temporary file for the mesh");
+    close(fd);
+    gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
+    gmsh::option::setNumber("Mesh.SaveAll", 0);
+    gmsh::option::setNumber("Mesh.Binary", 0);
+    gmsh::write(tmp_name);
+    std::ifstream      in(tmp_name);
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::remove(tmp_name);
+    result.msh_text = text.str();
+    return result;
+  }
+} // namespace compliant

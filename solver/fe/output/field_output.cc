@@ -1,0 +1,113 @@
+#include "output/field_output.h"
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <cstdio>
+
+namespace compliant
+{
+  using namespace dealii;
+
+  namespace
+  {
+    template <int dim>
+    class StressPostprocessor : public DataPostprocessor<dim>
+    {
+    public:
+      explicit StressPostprocessor(const LinearElasticProblem<dim> &problem) : problem(problem) {}
+
+      void evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
+                                 std::vector<Vector<double>> &computed) const override
+      {
+        const auto      cell     = inputs.template get_cell<dim>();
+        const Material &material = problem.materials.at(cell->material_id());
+        for (unsigned int k = 0; k < inputs.solution_gradients.size(); ++k)
+          {
+            Tensor<2, dim> grad;
+            for (unsigned int d = 0; d < dim; ++d)
+              grad[d] = inputs.solution_gradients[k][d];
+            const SymmetricTensor<2, dim> strain = symmetrize(grad);
+            double                        sigma_zz;
+            const auto                    sigma = problem.stress(strain, material, sigma_zz);
+            unsigned int                  c     = 0;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                computed[k][c++] = strain[i][j];
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                computed[k][c++] = sigma[i][j];
+            computed[k][c] = problem.von_mises(sigma, sigma_zz);
+          }
+      }
+
+      std::vector<std::string> get_names() const override
+      {
+        std::vector<std::string> names(dim * dim, "strain");
+        names.insert(names.end(), dim * dim, "stress");
+        names.push_back("von_mises");
+        return names;
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        std::vector<DataComponentInterpretation::DataComponentInterpretation> i(
+          2 * dim * dim, DataComponentInterpretation::component_is_part_of_tensor);
+        i.push_back(DataComponentInterpretation::component_is_scalar);
+        return i;
+      }
+
+      UpdateFlags get_needed_update_flags() const override { return update_gradients; }
+
+    private:
+      const LinearElasticProblem<dim> &problem;
+    };
+  } // namespace
+
+  template <int dim>
+  std::string write_fields(const LinearElasticProblem<dim> &problem, const std::string &directory)
+  {
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(problem.dof_handler);
+    const std::vector<std::string> names(dim, "displacement");
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+      dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(problem.solution, names, DataOut<dim>::type_dof_data, interpretation);
+    StressPostprocessor<dim> stress(problem);
+    data_out.add_data_vector(problem.solution, stress);
+
+    Vector<float> material_id(problem.triangulation.n_active_cells());
+    Vector<float> partition(problem.triangulation.n_active_cells());
+    for (const auto &cell : problem.triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          material_id(cell->active_cell_index()) = cell->material_id();
+          partition(cell->active_cell_index())   = cell->subdomain_id();
+        }
+    data_out.add_data_vector(material_id, "material_id");
+    data_out.add_data_vector(partition, "partition");
+    data_out.build_patches(*problem.mapping, problem.parameters.element_degree);
+
+    DataOutBase::DataOutFilter filter(DataOutBase::DataOutFilterFlags(true, true));
+    data_out.write_filtered_data(filter);
+    const std::string h5      = "fields.h5";
+    const std::string partial = directory + "/" + h5 + ".partial";
+    data_out.write_hdf5_parallel(filter, partial, problem.communicator);
+    std::vector<XDMFEntry> entries{
+      data_out.create_xdmf_entry(filter, h5, 0., problem.communicator)};
+    const std::string xdmf = directory + "/fields.xdmf";
+    data_out.write_xdmf_file(entries, xdmf + ".partial", problem.communicator);
+    MPI_Barrier(problem.communicator);
+    if (Utilities::MPI::this_mpi_process(problem.communicator) == 0)
+      {
+        std::rename(partial.c_str(), (directory + "/" + h5).c_str());
+        std::rename((xdmf + ".partial").c_str(), xdmf.c_str());
+      }
+    MPI_Barrier(problem.communicator);
+    return xdmf;
+  }
+
+  template std::string write_fields<2>(const LinearElasticProblem<2> &, const std::string &);
+  template std::string write_fields<3>(const LinearElasticProblem<3> &, const std::string &);
+} // namespace compliant

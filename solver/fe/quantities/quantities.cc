@@ -1,0 +1,387 @@
+#include "quantities/quantities.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include "input/spec_list.h"
+
+namespace compliant
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const char *axis_name[3] = {"x", "y", "z"};
+
+    template <int dim>
+    std::map<std::string, Point<dim>> requested_points(const CaseParameters &p)
+    {
+      std::map<std::string, Point<dim>> points;
+      for (const auto &item : parse_spec_list(p.points, "Quantities/Points"))
+        {
+          if (item.fields.size() != 1 || !item.fields[0].key.empty())
+            throw std::invalid_argument("Quantities/Points: expected 'name: x y [z]' for '" +
+                                        item.name + "'");
+          const auto t = parse_vector<dim>(item.fields[0].value, "Quantities/Points");
+          points[item.name] = Point<dim>(t);
+        }
+      return points;
+    }
+
+    // Moment points of the Reactions entry; boundaries without one use the origin.
+    template <int dim>
+    std::map<std::string, Point<3>> reaction_points(const CaseParameters &p)
+    {
+      std::map<std::string, Point<3>> points;
+      for (const auto &item : parse_spec_list(p.reactions, "Quantities/Reactions"))
+        {
+          Point<3> x;
+          if (!item.fields.empty())
+            {
+              const auto v = parse_numbers(item.fields[0].value, "Quantities/Reactions");
+              if (v.size() < dim || v.size() > 3)
+                throw std::invalid_argument("Quantities/Reactions: moment point of '" + item.name +
+                                            "' needs " + std::to_string(dim) + " coordinates");
+              for (unsigned int d = 0; d < v.size(); ++d)
+                x[d] = v[d];
+            }
+          points[item.name] = x;
+        }
+      return points;
+    }
+
+    std::vector<std::string> names_in(const std::string &list)
+    {
+      std::vector<std::string> names;
+      for (const auto &n : split(list, ','))
+        if (!n.empty())
+          names.push_back(n);
+      return names;
+    }
+
+    // Value of the solution at a point, found by whichever rank owns the cell around it.
+    template <int dim>
+    Tensor<1, dim> point_displacement(const LinearElasticProblem<dim> &problem, const Point<dim> &p,
+                                      bool &found)
+    {
+      Tensor<1, dim> value;
+      double         owner_count = 0;
+      try
+        {
+          const auto cell_and_point =
+            GridTools::find_active_cell_around_point(*problem.mapping, problem.dof_handler, p);
+          if (cell_and_point.first->is_locally_owned())
+            {
+              const Quadrature<dim> q(GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
+              FEValues<dim>         fe_values(*problem.mapping, *problem.fe, q, update_values);
+              fe_values.reinit(cell_and_point.first);
+              std::vector<Tensor<1, dim>> u(1);
+              fe_values[FEValuesExtractors::Vector(0)].get_function_values(problem.solution, u);
+              value       = u[0];
+              owner_count = 1;
+            }
+        }
+      catch (...)
+        {
+        }
+      owner_count = Utilities::MPI::sum(owner_count, problem.communicator);
+      found       = owner_count > 0;
+      value       = Utilities::MPI::sum(value, problem.communicator);
+      return found ? value / owner_count : value;
+    }
+
+    // Location and component of each locally owned DoF.
+    template <int dim>
+    std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>>
+    owned_dof_locations(const LinearElasticProblem<dim> &problem)
+    {
+      std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>> locations;
+      const Quadrature<dim> support(problem.fe->get_unit_support_points());
+      FEValues<dim> fe_values(*problem.mapping, *problem.fe, support, update_quadrature_points);
+      std::vector<types::global_dof_index> dofs(problem.fe->n_dofs_per_cell());
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (problem.locally_owned_dofs.is_element(dofs[i]))
+                locations[dofs[i]] = {problem.fe->system_to_component_index(i).first,
+                                      fe_values.quadrature_point(i)};
+          }
+      return locations;
+    }
+
+    // r = f_int(u) - f_ext: nonzero only where supports act, it is the support reaction.
+    template <int dim>
+    PETScWrappers::MPI::Vector reaction_vector(const LinearElasticProblem<dim> &problem)
+    {
+      PETScWrappers::MPI::Vector residual(problem.locally_owned_dofs, problem.communicator);
+      // The system matrix has the Dirichlet rows condensed away, so f_int is assembled afresh.
+      FEValues<dim> fe_values(*problem.mapping, *problem.fe, *problem.quadrature,
+                              update_gradients | update_values | update_JxW_values);
+      const FEValuesExtractors::Vector u(0);
+      const unsigned int               n = problem.fe->n_dofs_per_cell();
+      Vector<double>                   cell_vector(n);
+      std::vector<types::global_dof_index> dofs(n);
+      std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
+      const auto &bc = problem.boundary_conditions;
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[u].get_function_symmetric_gradients(problem.solution, strain);
+            const Material &material   = problem.materials.at(cell->material_id());
+            const auto      body_force = bc.body_force + material.density * bc.gravity;
+            cell_vector = 0;
+            for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+              {
+                double     sigma_zz;
+                const auto sigma = problem.stress(strain[q], material, sigma_zz);
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_vector(i) += (sigma * fe_values[u].symmetric_gradient(i, q) -
+                                     body_force * fe_values[u].value(i, q)) *
+                                    fe_values.JxW(q) * problem.thickness;
+              }
+            cell->get_dof_indices(dofs);
+            residual.add(dofs, cell_vector);
+          }
+      residual.compress(VectorOperation::add);
+      return residual;
+    }
+  } // namespace
+
+  template <int dim>
+  void validate_quantity_requests(const LinearElasticProblem<dim> &problem)
+  {
+    const auto &p = problem.parameters;
+    for (const auto &[name, point] : requested_points<dim>(p))
+      {
+        bool found = false;
+        point_displacement(problem, point, found);
+        if (!found)
+          throw std::invalid_argument("Quantities/Points: point '" + name +
+                                      "' lies outside the mesh");
+      }
+    for (const auto &[name, point] : reaction_points<dim>(p))
+      boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Reactions");
+    for (const auto &name : names_in(p.mean_displacements))
+      boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Mean displacements");
+    for (const auto &name : names_in(p.rotations))
+      boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Rotations");
+  }
+
+  template <int dim>
+  Quantities compute_quantities(const LinearElasticProblem<dim> &problem)
+  {
+    Quantities  q;
+    const auto &p    = problem.parameters;
+    const auto &bc   = problem.boundary_conditions;
+    MPI_Comm    comm = problem.communicator;
+
+    q["n_dofs"]            = problem.dof_handler.n_dofs();
+    q["n_cells"]           = problem.triangulation.n_active_cells();
+    q["n_ranks"]           = Utilities::MPI::n_mpi_processes(comm);
+    q["solver_iterations"] = problem.statistics.iterations;
+
+    for (const auto &[name, point] : requested_points<dim>(p))
+      {
+        bool       found;
+        const auto u = point_displacement(problem, point, found);
+        for (unsigned int d = 0; d < dim; ++d)
+          q["displacement_" + name + "_" + axis_name[d]] = u[d];
+      }
+
+    // Reactions on every supported boundary; the moment point is the rotation center for
+    // driven rotations, else the one given in Quantities/Reactions, else the origin.
+    const auto residual  = reaction_vector(problem);
+    const auto locations = owned_dof_locations(problem);
+    auto       moment_points = reaction_points<dim>(p);
+    std::vector<std::pair<std::string, int>> supported = bc.clamped;
+    for (const auto &d : bc.displacements)
+      supported.emplace_back(d.boundary, d.boundary_id);
+    for (const auto &r : bc.rotations)
+      {
+        supported.emplace_back(r.boundary, r.boundary_id);
+        moment_points[r.boundary] = r.center;
+      }
+    for (const auto &[name, point] : reaction_points<dim>(p))
+      if (std::find_if(supported.begin(), supported.end(),
+                       [&](const auto &s) { return s.first == name; }) == supported.end())
+        supported.emplace_back(name, problem.geometry.boundary_ids.at(name));
+
+    std::map<std::string, Tensor<1, 3>> moments;
+    for (const auto &[name, id] : supported)
+      {
+        const IndexSet boundary_dofs =
+          DoFTools::extract_boundary_dofs(problem.dof_handler, ComponentMask(),
+                                          {static_cast<types::boundary_id>(id)});
+        Tensor<1, 3> force, moment;
+        const Point<3> x0 = moment_points.count(name) ? moment_points[name] : Point<3>();
+        for (const auto &[dof, location] : locations)
+          if (boundary_dofs.is_element(dof))
+            {
+              Tensor<1, 3> f, r;
+              f[location.first] = residual[dof];
+              for (unsigned int d = 0; d < dim; ++d)
+                r[d] = location.second[d] - x0[d];
+              force += f;
+              moment += cross_product_3d(r, f);
+            }
+        force  = Utilities::MPI::sum(force, comm);
+        moment = Utilities::MPI::sum(moment, comm);
+        moments[name] = moment;
+        for (unsigned int d = 0; d < dim; ++d)
+          q["reaction_force_" + name + "_" + axis_name[d]] = force[d];
+        if (dim == 2)
+          q["reaction_moment_" + name + "_z"] = moment[2];
+        else
+          for (unsigned int d = 0; d < 3; ++d)
+            q["reaction_moment_" + name + "_" + axis_name[d]] = moment[d];
+      }
+    for (const auto &r : bc.rotations)
+      q["rotational_stiffness_" + r.boundary] = (moments[r.boundary] * r.axis) / r.angle;
+    for (const auto &d : bc.displacements)
+      for (unsigned int c = 0; c < dim; ++c)
+        if (d.mask[c] && d.values[c] != 0)
+          q["stiffness_" + d.boundary + "_" + axis_name[c]] =
+            q["reaction_force_" + d.boundary + "_" + axis_name[c]] / d.values[c];
+
+    // Mean displacement over a boundary (surface average).
+    for (const auto &name : names_in(p.mean_displacements))
+      {
+        const int         id = problem.geometry.boundary_ids.at(name);
+        FEFaceValues<dim> fe_face_values(*problem.mapping, *problem.fe, *problem.face_quadrature,
+                                         update_values | update_JxW_values);
+        std::vector<Tensor<1, dim>> u(problem.face_quadrature->size());
+        Tensor<1, dim>              integral;
+        double                      measure = 0;
+        for (const auto &cell : problem.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() && (int)cell->face(f)->boundary_id() == id)
+                {
+                  fe_face_values.reinit(cell, f);
+                  fe_face_values[FEValuesExtractors::Vector(0)].get_function_values(problem.solution, u);
+                  for (unsigned int k = 0; k < u.size(); ++k)
+                    {
+                      integral += u[k] * fe_face_values.JxW(k);
+                      measure += fe_face_values.JxW(k);
+                    }
+                }
+        integral = Utilities::MPI::sum(integral, comm);
+        measure  = Utilities::MPI::sum(measure, comm);
+        for (unsigned int d = 0; d < dim; ++d)
+          q["mean_displacement_" + name + "_" + axis_name[d]] = integral[d] / measure;
+      }
+
+    // Best-fit rigid motion u ~ t + w x (x - c) of a boundary's DoFs, least squares.
+    for (const auto &name : names_in(p.rotations))
+      {
+        const int      id = problem.geometry.boundary_ids.at(name);
+        const IndexSet boundary_dofs =
+          DoFTools::extract_boundary_dofs(problem.dof_handler, ComponentMask(),
+                                          {static_cast<types::boundary_id>(id)});
+        // Unknowns: t (3) and w (3); in 2D only t_x, t_y, w_z matter.
+        FullMatrix<double> normal(6, 6);
+        Vector<double>     rhs(6);
+        for (const auto &[dof, location] : locations)
+          if (boundary_dofs.is_element(dof))
+            {
+              double       row[6] = {0, 0, 0, 0, 0, 0};
+              const auto   c      = location.first;
+              Tensor<1, 3> x;
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] = location.second[d];
+              row[c] = 1;
+              for (unsigned int j = 0; j < 3; ++j)
+                {
+                  Tensor<1, 3> e;
+                  e[j]       = 1;
+                  row[3 + j] = cross_product_3d(e, x)[c];
+                }
+              for (unsigned int i = 0; i < 6; ++i)
+                {
+                  rhs(i) += row[i] * problem.solution[dof];
+                  for (unsigned int j = 0; j < 6; ++j)
+                    normal(i, j) += row[i] * row[j];
+                }
+            }
+        for (unsigned int i = 0; i < 6; ++i)
+          {
+            rhs(i) = Utilities::MPI::sum(rhs(i), comm);
+            for (unsigned int j = 0; j < 6; ++j)
+              normal(i, j) = Utilities::MPI::sum(normal(i, j), comm);
+          }
+        if (dim == 2) // t_z, w_x, w_y do not exist in plane models
+          for (unsigned int i : {2u, 3u, 4u})
+            normal(i, i) = 1;
+        Vector<double> tw(6);
+        normal.gauss_jordan();
+        normal.vmult(tw, rhs);
+        if (dim == 2)
+          q["rotation_" + name + "_z"] = tw(5);
+        else
+          for (unsigned int d = 0; d < 3; ++d)
+            q["rotation_" + name + "_" + axis_name[d]] = tw(3 + d);
+      }
+
+    // Peak von Mises over quadrature points and element nodes; strain energy.
+    {
+      std::vector<Point<dim>> points = problem.quadrature->get_points();
+      for (const auto &x : problem.fe->get_unit_support_points())
+        points.push_back(x);
+      const Quadrature<dim> sample(points);
+      FEValues<dim> sample_values(*problem.mapping, *problem.fe, sample,
+                                  update_gradients | update_quadrature_points);
+      FEValues<dim> fe_values(*problem.mapping, *problem.fe, *problem.quadrature,
+                              update_gradients | update_JxW_values);
+      std::vector<SymmetricTensor<2, dim>> strain(sample.size()), strain_q(problem.quadrature->size());
+      double     max_vm = -1, energy = 0, safety = std::numeric_limits<double>::max();
+      Point<dim> max_location;
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const Material &material = problem.materials.at(cell->material_id());
+            sample_values.reinit(cell);
+            sample_values[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(problem.solution, strain);
+            for (unsigned int k = 0; k < sample.size(); ++k)
+              {
+                double     sigma_zz;
+                const auto sigma = problem.stress(strain[k], material, sigma_zz);
+                const double vm  = problem.von_mises(sigma, sigma_zz);
+                if (vm > max_vm)
+                  max_vm = vm, max_location = sample_values.quadrature_point(k);
+                if (material.yield_strength > 0 && vm > 0)
+                  safety = std::min(safety, material.yield_strength / vm);
+              }
+            fe_values.reinit(cell);
+            fe_values[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(problem.solution, strain_q);
+            for (unsigned int k = 0; k < strain_q.size(); ++k)
+              {
+                double sigma_zz;
+                energy += 0.5 * (problem.stress(strain_q[k], material, sigma_zz) * strain_q[k]) *
+                          fe_values.JxW(k) * problem.thickness;
+              }
+          }
+      const auto global_max = Utilities::MPI::min_max_avg(max_vm, comm);
+      Tensor<1, dim> location = Utilities::MPI::this_mpi_process(comm) == global_max.max_index ?
+                                  Tensor<1, dim>(max_location) : Tensor<1, dim>();
+      location = Utilities::MPI::sum(location, comm);
+      q["max_von_mises"] = global_max.max;
+      for (unsigned int d = 0; d < dim; ++d)
+        q[std::string("max_von_mises_") + axis_name[d]] = location[d];
+      q["strain_energy"]       = Utilities::MPI::sum(energy, comm);
+      q["yield_safety_factor"] = Utilities::MPI::min(safety, comm);
+    }
+    return q;
+  }
+
+  template void validate_quantity_requests<2>(const LinearElasticProblem<2> &);
+  template void validate_quantity_requests<3>(const LinearElasticProblem<3> &);
+  template Quantities compute_quantities<2>(const LinearElasticProblem<2> &);
+  template Quantities compute_quantities<3>(const LinearElasticProblem<3> &);
+} // namespace compliant
