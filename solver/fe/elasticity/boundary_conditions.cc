@@ -1,5 +1,6 @@
 #include "elasticity/boundary_conditions.h"
 
+#include "input/expression.h"
 #include "input/spec_list.h"
 
 #include <cmath>
@@ -81,17 +82,26 @@ namespace compliant
           d.boundary_id = boundary_id_of(item.name, boundaries, where);
           d.mask.assign(dim, false);
           d.values.assign(dim, 0.0);
+          d.expressions.assign(dim, "0");
           if (item.fields.empty())
             throw std::invalid_argument(where + ": '" + item.name + "' names no component");
           for (const auto &f : item.fields)
             {
-              const int  c = component_index(f.key, dim, where);
-              const auto v = parse_numbers(f.value, where);
-              if (v.size() != 1)
-                throw std::invalid_argument(where + ": component '" + f.key + "' of '" +
-                                            item.name + "' expects one number");
-              d.mask[c]   = true;
-              d.values[c] = v[0];
+              const int c      = component_index(f.key, dim, where);
+              d.mask[c]        = true;
+              d.expressions[c] = f.value;
+              // A number is a constant; anything else is a muparser expression of x, y, z.
+              try
+                {
+                  const auto v = parse_numbers(f.value, where);
+                  if (v.size() != 1)
+                    throw std::invalid_argument("");
+                  d.values[c] = v[0];
+                }
+              catch (const std::invalid_argument &)
+                {
+                  d.is_constant = false;
+                }
             }
           bc.displacements.push_back(d);
         }
@@ -113,7 +123,8 @@ namespace compliant
                                           item.name + "'; expected angle|degrees, center, axis");
           r.angle = item.has("angle") ? parse_numbers(item.get("angle"), where).at(0) :
                                         parse_numbers(item.get("degrees"), where).at(0) * M_PI / 180;
-          const auto c = parse_numbers(item.get("center"), where + " center");
+          const auto c = evaluate_coordinates(item.get("center"), p.geometry_parameters,
+                                              where + " center of '" + item.name + "'");
           if (!(c.size() == (unsigned)dim || (c.size() == 3 && dim == 2)))
             throw std::invalid_argument(where + ": center of '" + item.name + "' needs " +
                                         std::to_string(dim) + " coordinates");

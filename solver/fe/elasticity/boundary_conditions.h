@@ -27,8 +27,10 @@ namespace compliant
   {
     int                  boundary_id;
     std::string          boundary;
-    std::vector<bool>    mask;   // per component
-    std::vector<double>  values; // per component
+    std::vector<bool>        mask;        // per component
+    std::vector<double>      values;      // per component, when constant
+    std::vector<std::string> expressions; // per component, muparser in x, y, z ("0" if free)
+    bool                     is_constant = true;
   };
 
   template <int dim>

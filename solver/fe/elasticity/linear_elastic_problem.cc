@@ -1,6 +1,7 @@
 #include "elasticity/linear_elastic_problem.h"
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -104,9 +105,22 @@ namespace compliant
       VectorTools::interpolate_boundary_values(*mapping, dof_handler, id,
                                                Functions::ZeroFunction<dim>(dim), constraints);
     for (const auto &d : boundary_conditions.displacements)
-      VectorTools::interpolate_boundary_values(*mapping, dof_handler, d.boundary_id,
-                                               Functions::ConstantFunction<dim>(d.values),
-                                               constraints, ComponentMask(d.mask));
+      {
+        FunctionParser<dim> field(dim);
+        try
+          {
+            field.initialize(dim == 2 ? "x,y" : "x,y,z", d.expressions, {});
+          }
+        catch (const std::exception &)
+          {
+            throw std::invalid_argument("Boundary conditions/Displacement: the values of '" +
+                                        d.boundary +
+                                        "' must be numbers or expressions of x, y" +
+                                        (dim == 3 ? ", z" : ""));
+          }
+        VectorTools::interpolate_boundary_values(*mapping, dof_handler, d.boundary_id, field,
+                                                 constraints, ComponentMask(d.mask));
+      }
     for (const auto &r : boundary_conditions.rotations)
       VectorTools::interpolate_boundary_values(*mapping, dof_handler, r.boundary_id,
                                                RigidRotation<dim>(r.angle, r.center, r.axis),

@@ -68,11 +68,13 @@ namespace compliant
                         "Boundaries with all displacement components zero: 'left, right'.");
       prm.declare_entry("Displacement", "", Patterns::Anything(),
                         "Prescribed displacement per component: 'right: y=0.1; top: x=0, z=0'. "
-                        "Components not named stay free.");
+                        "Components not named stay free. A value may be an expression of x, y, z, e.g. "
+                        "'outer: x=1e-3*(x+y/2), y=1e-3*(y+x/2)'.");
       prm.declare_entry("Rotation", "", Patterns::Anything(),
                         "Prescribed rigid rotation of a boundary: 'right: degrees=1 (or angle=rad), "
                         "center=x y z, axis=0 0 1'. In 2D the axis is z. The exact rotation is "
-                        "imposed (not its small-angle form).");
+                        "imposed (not its small-angle form). Coordinates may be expressions of geometry "
+                        "parameters: center=l/2 0.");
     }
     prm.leave_subsection();
 
@@ -107,7 +109,8 @@ namespace compliant
     {
       prm.declare_entry("Points", "", Patterns::Anything(),
                         "Named points for displacement output: 'tip: 48 60; mid: 24 52'. "
-                        "Gives displacement_<name>_<x|y|z>.");
+                        "Gives displacement_<name>_<x|y|z>. Coordinates may be expressions of geometry "
+                        "parameters: 'p1: 0.4*L H/4 0'.");
       prm.declare_entry("Reactions", "", Patterns::Anything(),
                         "Boundaries whose reaction force and moment are reported, with the moment "
                         "point (default: origin; rotation-driven boundaries: the rotation "

@@ -1,7 +1,5 @@
 #include "quantities/comparison.h"
 
-#include <deal.II/base/function_parser.h>
-
 #include <closed_forms/registry.h>
 
 #include "input/spec_list.h"
@@ -11,30 +9,6 @@
 
 namespace compliant
 {
-  double evaluate_expression(const std::string                   &expression,
-                             const std::map<std::string, double> &variables,
-                             const std::string                   &where)
-  {
-    try
-      {
-        dealii::FunctionParser<1> parser(1);
-        parser.initialize("x_", expression, variables);
-        return parser.value(dealii::Point<1>());
-      }
-    catch (const std::exception &e)
-      {
-        std::string known;
-        for (const auto &v : variables)
-          known += " " + v.first;
-        std::string message = e.what();
-        const auto  pos     = message.find("Additional information:");
-        if (pos != std::string::npos)
-          message = trim(message.substr(pos + 23, 300));
-        throw std::invalid_argument(where + ": cannot evaluate '" + expression + "' (" + message +
-                                    "); known names:" + known);
-      }
-  }
-
   std::vector<CheckRequest> parse_checks(const std::string &text)
   {
     const std::string         where = "Comparison/Checks";

@@ -2,6 +2,8 @@
 // with the named closed forms of the closed_forms library, with their validity warnings.
 #pragma once
 
+#include "input/expression.h"
+
 #include <map>
 #include <string>
 #include <vector>
@@ -36,9 +38,4 @@ namespace compliant
   std::vector<Comparison> run_checks(const std::vector<CheckRequest>     &requests,
                                      const std::map<std::string, double> &quantities,
                                      const std::map<std::string, double> &variables);
-
-  // Evaluates a muparser expression; names the context on error.
-  double evaluate_expression(const std::string &expression,
-                             const std::map<std::string, double> &variables,
-                             const std::string &where);
 } // namespace compliant

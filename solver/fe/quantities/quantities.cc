@@ -6,6 +6,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include "input/expression.h"
 #include "input/spec_list.h"
 
 namespace compliant
@@ -25,8 +26,13 @@ namespace compliant
           if (item.fields.size() != 1 || !item.fields[0].key.empty())
             throw std::invalid_argument("Quantities/Points: expected 'name: x y [z]' for '" +
                                         item.name + "'");
-          const auto t = parse_vector<dim>(item.fields[0].value, "Quantities/Points");
-          points[item.name] = Point<dim>(t);
+          const auto x = evaluate_coordinates(item.fields[0].value, p.geometry_parameters,
+                                              "Quantities/Points '" + item.name + "'");
+          if (x.size() != dim)
+            throw std::invalid_argument("Quantities/Points: '" + item.name + "' needs " +
+                                        std::to_string(dim) + " coordinates");
+          for (unsigned int d = 0; d < dim; ++d)
+            points[item.name][d] = x[d];
         }
       return points;
     }
@@ -246,7 +252,7 @@ namespace compliant
       q["rotational_stiffness_" + r.boundary] = (moments[r.boundary] * r.axis) / r.angle;
     for (const auto &d : bc.displacements)
       for (unsigned int c = 0; c < dim; ++c)
-        if (d.mask[c] && d.values[c] != 0)
+        if (d.is_constant && d.mask[c] && d.values[c] != 0)
           q["stiffness_" + d.boundary + "_" + axis_name[c]] =
             q["reaction_force_" + d.boundary + "_" + axis_name[c]] / d.values[c];
 

@@ -1,0 +1,113 @@
+#include "beams.h"
+
+#include "input_checks.h"
+#include "root_finding.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace closed_forms
+{
+  using internal::require_finite;
+  using internal::require_poisson_ratio;
+  using internal::require_positive;
+
+  double
+  second_moment_of_area(const double b, const double h)
+  {
+    require_positive("b", b);
+    require_positive("h", h);
+    return b * h * h * h / 12.0;
+  }
+
+  double
+  section_area(const double b, const double h)
+  {
+    require_positive("b", b);
+    require_positive("h", h);
+    return b * h;
+  }
+
+  double
+  shear_modulus(const double E, const double nu)
+  {
+    require_positive("E", E);
+    require_poisson_ratio("nu", nu);
+    return E / (2.0 * (1.0 + nu));
+  }
+
+  // Gere and Timoshenko, Mechanics of Materials, cantilever with end load.
+  double
+  euler_bernoulli_cantilever_deflection(const double P, const double L, const double E, const double b,
+                                        const double h)
+  {
+    require_finite("P", P);
+    require_positive("L", L);
+    require_positive("E", E);
+    return P * L * L * L / (3.0 * E * second_moment_of_area(b, h));
+  }
+
+  // Timoshenko and Gere, Mechanics of Materials: bending plus shear deflection P L / (kappa G A).
+  double
+  timoshenko_cantilever_deflection(const double P, const double L, const double E, const double nu,
+                                   const double b, const double h, const double kappa)
+  {
+    require_positive("kappa", kappa);
+    const double shear = P * L / (kappa * shear_modulus(E, nu) * section_area(b, h));
+    return euler_bernoulli_cantilever_deflection(P, L, E, b, h) + shear;
+  }
+
+  double
+  euler_bernoulli_guided_stiffness(const double L, const double E, const double b, const double h)
+  {
+    require_positive("L", L);
+    require_positive("E", E);
+    return 12.0 * E * second_moment_of_area(b, h) / (L * L * L);
+  }
+
+  // Two Timoshenko cantilevers of length L/2 joined at the inflection point.
+  double
+  timoshenko_guided_stiffness(const double L, const double E, const double nu, const double b,
+                              const double h, const double kappa)
+  {
+    require_positive("L", L);
+    require_positive("kappa", kappa);
+    const double EI = E * second_moment_of_area(b, h);
+    const double kGA = kappa * shear_modulus(E, nu) * section_area(b, h);
+    const double Phi = 12.0 * EI / (kGA * L * L);
+    return 12.0 * EI / (L * L * L * (1.0 + Phi));
+  }
+
+  // 1 + cos x cosh x = 0 is rewritten as cos x + 1/cosh x = 0 so that cosh never overflows. On
+  // [(n-1) pi, n pi] cos x changes sign and 1/cosh x < 1 is too small to remove that change, so each
+  // interval holds the n-th root.
+  double
+  cantilever_frequency_root(const unsigned int n)
+  {
+    if (n == 0)
+      throw std::invalid_argument("closed_forms: parameter 'n' (mode number) must be >= 1, got 0");
+    const auto characteristic = [](const double x) { return std::cos(x) + 1.0 / std::cosh(x); };
+    return internal::find_root_by_bisection(characteristic, (n - 1) * M_PI, n * M_PI);
+  }
+
+  // Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1 (clamped-free).
+  double
+  euler_bernoulli_cantilever_angular_frequency(const unsigned int n, const double L, const double E,
+                                               const double rho, const double b, const double h)
+  {
+    require_positive("L", L);
+    require_positive("E", E);
+    require_positive("rho", rho);
+    const double beta_L = cantilever_frequency_root(n);
+    const double EI = E * second_moment_of_area(b, h);
+    const double mass_per_length = rho * section_area(b, h);
+    return beta_L * beta_L * std::sqrt(EI / (mass_per_length * std::pow(L, 4)));
+  }
+
+  double
+  euler_bernoulli_cantilever_frequency(const unsigned int n, const double L, const double E,
+                                       const double rho, const double b, const double h)
+  {
+    return euler_bernoulli_cantilever_angular_frequency(n, L, E, rho, b, h) / (2.0 * M_PI);
+  }
+} // namespace closed_forms

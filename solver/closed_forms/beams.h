@@ -1,0 +1,43 @@
+// Linear beam formulas for a rectangular section: width b (out of the bending plane), depth h (in the
+// bending direction), I = b h^3 / 12, A = b h; isotropic material E, nu, G = E / (2 (1 + nu)).
+// Any consistent unit system works (e.g. N, mm, MPa, t/mm^3).
+#ifndef CLOSED_FORMS_BEAMS_H
+#define CLOSED_FORMS_BEAMS_H
+
+namespace closed_forms
+{
+  // Shear correction factor of a rectangle used throughout (Timoshenko; Cowper's 10(1+nu)/(12+11nu)
+  // is the alternative, 0.85 at nu = 0.3).
+  constexpr double rectangle_shear_coefficient = 5.0 / 6.0;
+
+  double second_moment_of_area(double b, double h);
+  double section_area(double b, double h);
+  double shear_modulus(double E, double nu);
+
+  // Tip deflection of a cantilever under a transverse tip load P: P L^3 / (3 E I).
+  double euler_bernoulli_cantilever_deflection(double P, double L, double E, double b, double h);
+
+  // Adds the shear deflection P L / (kappa G A) (Timoshenko beam).
+  double timoshenko_cantilever_deflection(double P, double L, double E, double nu, double b, double h,
+                                          double kappa = rectangle_shear_coefficient);
+
+  // Fixed-guided beam (both ends clamped, one end free to translate transversely): 12 E I / L^3.
+  double euler_bernoulli_guided_stiffness(double L, double E, double b, double h);
+
+  // 12 E I / (L^3 (1 + Phi)), Phi = 12 E I / (kappa G A L^2).
+  double timoshenko_guided_stiffness(double L, double E, double nu, double b, double h,
+                                     double kappa = rectangle_shear_coefficient);
+
+  // n-th positive root x = beta_n L of 1 + cos x cosh x = 0 (clamped-free beam), n >= 1.
+  double cantilever_frequency_root(unsigned int n);
+
+  // omega_n = (beta_n L)^2 sqrt(E I / (rho A L^4)) in rad per unit time.
+  double euler_bernoulli_cantilever_angular_frequency(unsigned int n, double L, double E, double rho,
+                                                      double b, double h);
+
+  // omega_n / (2 pi), cycles per unit time (Hz with SI or N-mm-t units).
+  double euler_bernoulli_cantilever_frequency(unsigned int n, double L, double E, double rho,
+                                              double b, double h);
+} // namespace closed_forms
+
+#endif

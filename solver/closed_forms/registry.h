@@ -1,0 +1,51 @@
+// Name-based access to the closed forms, so that a case file can name a reference formula and give
+// its arguments as name=value pairs. Plain functions live in beams.h, prbm.h, torsion.h, elastica.h.
+#ifndef CLOSED_FORMS_REGISTRY_H
+#define CLOSED_FORMS_REGISTRY_H
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace closed_forms
+{
+  struct Argument
+  {
+    std::string name;
+    std::string description;
+    bool required;
+    double default_value;  // NaN for an optional argument that has no default ("not given")
+    bool must_be_positive = false;  // lengths, moduli, densities: evaluate() rejects values <= 0
+  };
+
+  struct Result
+  {
+    double value;
+    std::vector<std::string> warnings;  // the arguments lie outside the formula's validity range
+  };
+
+  struct Formula
+  {
+    std::string name;         // snake_case
+    std::string description;  // what is returned, in consistent units
+    std::string source;       // citation
+    std::vector<Argument> arguments;
+    // Receives every argument, defaults filled in.
+    std::function<Result(const std::map<std::string, double> &)> evaluate;
+  };
+
+  const std::vector<Formula> &registry();
+
+  // Throws std::invalid_argument listing the known names.
+  const Formula &find(const std::string &name);
+
+  // Validates the arguments (unknown name, missing required argument, non-finite value, non-positive
+  // length or modulus: std::invalid_argument naming the argument), fills defaults, evaluates.
+  Result evaluate(const std::string &name, const std::map<std::string, double> &args);
+
+  // Human-readable list of all formulas with their arguments and sources.
+  std::string documentation();
+} // namespace closed_forms
+
+#endif

@@ -1,0 +1,140 @@
+// Linear beam formulas against the unit-load method, structural symmetry and published roots.
+#include <closed_forms/beams.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace closed_forms;
+
+namespace
+{
+  // Seed A flexure section (mm) in a generic stiff polymer (MPa); values are arbitrary but typical.
+  constexpr double b = 1.5, h = 3.0, E = 2000.0, nu = 0.35, P = 1.0;
+
+  // Unit-load (virtual work) deflection of a tip-loaded cantilever, by Simpson's rule on
+  // int M m / (E I) dx + int V v / (kappa G A) dx, M = P (L - x), m = L - x, V = P, v = 1.
+  double
+  unit_load_deflection(const double L, const double EI, const double kGA)
+  {
+    const unsigned int intervals = 100;
+    const double dx = L / intervals;
+    double sum = 0.0;
+    for (unsigned int k = 0; k <= intervals; ++k)
+      {
+        const double x = k * dx;
+        const double weight = (k == 0 || k == intervals) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
+        sum += weight * (P * (L - x) * (L - x) / EI + P / kGA);
+      }
+    return sum * dx / 3.0;
+  }
+} // namespace
+
+TEST(Beams, SectionProperties)
+{
+  EXPECT_DOUBLE_EQ(second_moment_of_area(2.0, 3.0), 4.5);  // 2 * 27 / 12
+  EXPECT_DOUBLE_EQ(section_area(2.0, 3.0), 6.0);
+  EXPECT_DOUBLE_EQ(shear_modulus(260.0, 0.3), 100.0);
+}
+
+// Simpson's rule is exact for the quadratic integrand: agreement to rounding.
+TEST(Beams, CantileverDeflectionsMatchTheUnitLoadMethod)
+{
+  const double L = 20.0;
+  const double EI = E * b * h * h * h / 12.0;
+  const double kGA = 5.0 / 6.0 * E / (2.0 * (1.0 + nu)) * b * h;
+  EXPECT_NEAR(euler_bernoulli_cantilever_deflection(P, L, E, b, h) /
+                unit_load_deflection(L, EI, 1e300),
+              1.0, 1e-12);
+  EXPECT_NEAR(timoshenko_cantilever_deflection(P, L, E, nu, b, h) / unit_load_deflection(L, EI, kGA),
+              1.0, 1e-12);
+}
+
+// The shear share is 3 E I/(kappa G A L^2) = (E/(4 kappa G)) (h/L)^2: it vanishes for slender beams.
+TEST(Beams, TimoshenkoTendsToEulerBernoulliForSlenderBeams)
+{
+  const double shear_coefficient = E / (4.0 * 5.0 / 6.0 * E / (2.0 * (1.0 + nu)));
+  for (const double slenderness : {3.0, 10.0, 100.0, 1000.0})
+    {
+      const double L = slenderness * h;
+      const double ratio = timoshenko_cantilever_deflection(P, L, E, nu, b, h) /
+                           euler_bernoulli_cantilever_deflection(P, L, E, b, h);
+      EXPECT_NEAR(ratio - 1.0, shear_coefficient / (slenderness * slenderness), 1e-12);
+      const double guided_ratio = euler_bernoulli_guided_stiffness(L, E, b, h) /
+                                  timoshenko_guided_stiffness(L, E, nu, b, h);
+      EXPECT_NEAR(guided_ratio - 1.0, 4.0 * shear_coefficient / (slenderness * slenderness), 1e-12);
+    }
+  EXPECT_NEAR(timoshenko_guided_stiffness(1000.0 * h, E, nu, b, h) /
+                euler_bernoulli_guided_stiffness(1000.0 * h, E, b, h),
+              1.0, 1e-5);
+}
+
+// Antisymmetry: a fixed-guided beam has its inflection point at mid-span, so it is two cantilevers of
+// length L/2 in series carrying the same shear force.
+TEST(Beams, GuidedBeamIsTwoHalfCantileversInSeries)
+{
+  for (const double L : {6.0, 30.0, 300.0})
+    {
+      EXPECT_NEAR(euler_bernoulli_guided_stiffness(L, E, b, h) *
+                    (2.0 * euler_bernoulli_cantilever_deflection(1.0, 0.5 * L, E, b, h)),
+                  1.0, 1e-12);
+      EXPECT_NEAR(timoshenko_guided_stiffness(L, E, nu, b, h) *
+                    (2.0 * timoshenko_cantilever_deflection(1.0, 0.5 * L, E, nu, b, h)),
+                  1.0, 1e-12);
+    }
+}
+
+// Published roots (Blevins, table 8-1; closed-forms.md) to their five decimals.
+TEST(Beams, CantileverFrequencyRoots)
+{
+  const double published[] = {1.87510, 4.69409, 7.85476, 10.99554};
+  for (unsigned int n = 1; n <= 4; ++n)
+    {
+      const double x = cantilever_frequency_root(n);
+      EXPECT_NEAR(x, published[n - 1], 5e-6) << "n = " << n;
+      EXPECT_NEAR((1.0 + std::cos(x) * std::cosh(x)) / std::cosh(x), 0.0, 1e-14) << "n = " << n;
+    }
+  // Asymptote (2n - 1) pi / 2; the difference decays like 2 exp(-x).
+  EXPECT_NEAR(cantilever_frequency_root(10), 19.0 * M_PI / 2.0, 1e-12);
+  EXPECT_THROW(cantilever_frequency_root(0), std::invalid_argument);
+}
+
+// Rayleigh's quotient with the static tip-load shape 3 xi^2 - xi^3 bounds (beta_1 L)^4 from above by
+// 12 * 35 / 33 (Rayleigh's principle); it is known to be close (the shapes differ little).
+TEST(Beams, FirstFrequencyIsBelowRayleighBound)
+{
+  const double L = 50.0, rho = 1.2e-9;  // mm, t/mm^3
+  const double EI = E * b * h * h * h / 12.0, mass_per_length = rho * b * h;
+  const double omega = euler_bernoulli_cantilever_angular_frequency(1, L, E, rho, b, h);
+  const double rayleigh = std::sqrt(12.0 * 35.0 / 33.0 * EI / (mass_per_length * std::pow(L, 4)));
+  EXPECT_LT(omega, rayleigh);
+  EXPECT_GT(omega, rayleigh / 1.02);
+  EXPECT_NEAR(euler_bernoulli_cantilever_frequency(1, L, E, rho, b, h), omega / (2.0 * M_PI),
+              1e-12 * omega);
+}
+
+// Frequencies scale with the square of the roots; the published five-decimal roots fix the ratio to
+// 7.5e-6 relative (4.7e-5 absolute).
+TEST(Beams, HigherModesScaleWithRootSquared)
+{
+  const double L = 50.0, rho = 1.2e-9;
+  const double f1 = euler_bernoulli_cantilever_frequency(1, L, E, rho, b, h);
+  const double f2 = euler_bernoulli_cantilever_frequency(2, L, E, rho, b, h);
+  EXPECT_NEAR(f2 / f1, std::pow(4.69409 / 1.87510, 2), 5e-5);
+}
+
+TEST(Beams, BadInputThrowsNamingTheParameter)
+{
+  try
+    {
+      euler_bernoulli_cantilever_deflection(P, 10.0, E, b, -1.0);
+      FAIL() << "no exception";
+    }
+  catch (const std::invalid_argument &error)
+    {
+      EXPECT_NE(std::string(error.what()).find("'h'"), std::string::npos) << error.what();
+    }
+  EXPECT_THROW(timoshenko_cantilever_deflection(P, 10.0, E, 0.6, b, h), std::invalid_argument);
+  EXPECT_THROW(euler_bernoulli_guided_stiffness(0.0, E, b, h), std::invalid_argument);
+  EXPECT_THROW(euler_bernoulli_cantilever_frequency(1, 10.0, E, -1.0, b, h), std::invalid_argument);
+}
