@@ -1,18 +1,24 @@
-// Rectangular bar, 3D, structured hexahedra: x in [0, L], cross-section H (y) x W (z) centred.
+// Rectangular bar, 3D, structured hexahedra (or tetrahedra with hexes = 0): x in [0, L], cross-section H (y) x W (z) centred.
 // Boundaries: left (x=0), right (x=L), sides. Body: body.
 DefineConstant[ L = {100, Name "Parameters/L", Help "length along x"} ];
 DefineConstant[ H = {10, Name "Parameters/H", Help "depth along y"} ];
 DefineConstant[ W = {10, Name "Parameters/W", Help "width along z"} ];
 DefineConstant[ ny = {4, Name "Parameters/ny", Help "elements along y"} ];
 DefineConstant[ nz = {4, Name "Parameters/nz", Help "elements along z"} ];
+DefineConstant[ hexes = {1, Name "Parameters/hexes", Help "1: structured hexahedra, 0: unstructured tetrahedra"} ];
 DefineConstant[ nx = {0, Name "Parameters/nx", Help "elements along x; 0: about square cells (ny L/H)"} ];
 n_x = (nx > 0) ? nx : Ceil(ny * L / H);
 Point(1) = {0, -H/2, -W/2}; Point(2) = {0, H/2, -W/2}; Point(3) = {0, H/2, W/2}; Point(4) = {0, -H/2, W/2};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 Transfinite Curve{1, 3} = ny + 1; Transfinite Curve{2, 4} = nz + 1;
-Transfinite Surface{1}; Recombine Surface{1};
-out[] = Extrude {L, 0, 0} { Surface{1}; Layers{n_x}; Recombine; };
+If (hexes)
+  Transfinite Surface{1}; Recombine Surface{1};
+  out[] = Extrude {L, 0, 0} { Surface{1}; Layers{n_x}; Recombine; };
+Else
+  out[] = Extrude {L, 0, 0} { Surface{1}; };
+  Mesh.CharacteristicLengthMax = H / ny;
+EndIf
 Physical Surface("left") = {1};
 Physical Surface("right") = {out[0]};
 Physical Surface("sides") = {out[2], out[3], out[4], out[5]};

@@ -57,6 +57,16 @@ namespace closed_forms
     return euler_bernoulli_cantilever_deflection(P, L, E, b, h) + shear;
   }
 
+  // Timoshenko and Goodier sec. 21, in the form of Augarde and Deeks 2008, eq. (1)-(2) at (L, 0).
+  double
+  timoshenko_goodier_cantilever_deflection(const double P, const double L, const double E,
+                                           const double nu, const double b, const double h)
+  {
+    const double EI = E * second_moment_of_area(b, h);
+    return euler_bernoulli_cantilever_deflection(P, L, E, b, h) +
+           (4.0 + 5.0 * nu) * P * h * h * L / (24.0 * EI);
+  }
+
   double
   euler_bernoulli_guided_stiffness(const double L, const double E, const double b, const double h)
   {

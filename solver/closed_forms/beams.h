@@ -21,6 +21,13 @@ namespace closed_forms
   double timoshenko_cantilever_deflection(double P, double L, double E, double nu, double b, double h,
                                           double kappa = rectangle_shear_coefficient);
 
+  // Exact plane-stress elasticity solution of a cantilever with a parabolic end shear P whose
+  // clamped end follows the same solution (Timoshenko and Goodier, Theory of Elasticity, sec. 21;
+  // Augarde and Deeks, Finite Elem. Anal. Des. 44, 2008): deflection of the centroid of the loaded
+  // end, P L^3/(3 E I) + (4 + 5 nu) P h^2 L/(24 E I).
+  double timoshenko_goodier_cantilever_deflection(double P, double L, double E, double nu, double b,
+                                                  double h);
+
   // Fixed-guided beam (both ends clamped, one end free to translate transversely): 12 E I / L^3.
   double euler_bernoulli_guided_stiffness(double L, double E, double b, double h);
 

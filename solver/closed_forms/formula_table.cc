@@ -174,6 +174,20 @@ namespace closed_forms
            }});
 
         table.push_back(
+          {"timoshenko_goodier_cantilever_deflection",
+           "plane-stress elasticity: end deflection of a cantilever with parabolic end shear and the "
+           "matching end restraint, P L^3/(3EI) + (4+5nu) P h^2 L/(24EI) (length)",
+           "Timoshenko and Goodier, Theory of Elasticity, sec. 21; Augarde and Deeks 2008",
+           {load(), length_L(), modulus_E(), poisson_nu(), width_b(), depth_h()},
+           [](const Args &p) {
+             Result r{timoshenko_goodier_cantilever_deflection(p.at("P"), p.at("L"), p.at("E"),
+                                                               p.at("nu"), p.at("b"), p.at("h")),
+                      {}};
+             check_linear_deflection(r, r.value, p.at("L"));
+             return r;
+           }});
+
+        table.push_back(
           {"euler_bernoulli_guided_stiffness",
            "transverse stiffness of a fixed-guided beam, 12 E I / L^3 (force/length)",
            "Gere and Timoshenko, Mechanics of Materials; Howell 2001 sec. 5.6",

@@ -4,6 +4,7 @@
 #include "input/spec_list.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace compliant
@@ -153,8 +154,24 @@ namespace compliant
         {
           if (item.fields.size() != 1 || !item.fields[0].key.empty())
             throw std::invalid_argument(where + ": expected 'boundary: fx fy [fz]'");
-          bc.tractions[boundary_id_of(item.name, boundaries, where)] +=
-            parse_vector<dim>(item.fields[0].value, where);
+          const int id = boundary_id_of(item.name, boundaries, where);
+          try
+            {
+              bc.tractions[id] += parse_vector<dim>(item.fields[0].value, where);
+            }
+          catch (const std::invalid_argument &)
+            {
+              // Not numbers: one expression of x, y, z per component, e.g. "0 (1-y^2)".
+              std::istringstream       in(item.fields[0].value);
+              std::vector<std::string> components;
+              for (std::string c; in >> c;)
+                components.push_back(c);
+              if (components.size() != dim || bc.traction_fields.count(id))
+                throw std::invalid_argument(where + ": '" + item.name + "' needs " +
+                                            std::to_string(dim) +
+                                            " space-separated numbers or expressions");
+              bc.traction_fields[id] = components;
+            }
         }
     }
     {

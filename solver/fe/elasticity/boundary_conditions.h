@@ -40,6 +40,8 @@ namespace compliant
     std::vector<PrescribedDisplacement<dim>>     displacements;
     std::vector<PrescribedRotation<dim>>         rotations;
     std::map<int, dealii::Tensor<1, dim>>        tractions;     // per boundary id
+    // Tractions given as expressions of x, y, z and geometry parameters, per boundary id.
+    std::map<int, std::vector<std::string>>      traction_fields;
     std::map<std::string, dealii::Tensor<1, dim>> total_forces; // by boundary name
     dealii::Tensor<1, dim>                       body_force;
     dealii::Tensor<1, dim>                       gravity;

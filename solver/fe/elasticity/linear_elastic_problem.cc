@@ -90,6 +90,7 @@ namespace compliant
                                                locally_relevant_dofs);
     system_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
     system_rhs.reinit(locally_owned_dofs, communicator);
+    external_forces.reinit(locally_owned_dofs, communicator);
     solution.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
     statistics.setup_seconds = timer.wall_time();
   }
@@ -109,14 +110,17 @@ namespace compliant
         FunctionParser<dim> field(dim);
         try
           {
-            field.initialize(dim == 2 ? "x,y" : "x,y,z", d.expressions, {});
+            field.initialize(dim == 2 ? "x,y" : "x,y,z", d.expressions,
+                             parameters.geometry_parameters);
+            Vector<double> probe(dim);
+            field.vector_value(Point<dim>(), probe); // muparser reports syntax errors here
           }
         catch (const std::exception &)
           {
             throw std::invalid_argument("Boundary conditions/Displacement: the values of '" +
                                         d.boundary +
                                         "' must be numbers or expressions of x, y" +
-                                        (dim == 3 ? ", z" : ""));
+                                        (dim == 3 ? ", z" : "") + " and geometry parameters");
           }
         VectorTools::interpolate_boundary_values(*mapping, dof_handler, d.boundary_id, field,
                                                  constraints, ComponentMask(d.mask));
@@ -188,15 +192,36 @@ namespace compliant
   void LinearElasticProblem<dim>::assemble()
   {
     Timer timer;
-    system_matrix = 0;
-    system_rhs    = 0;
+    system_matrix   = 0;
+    system_rhs      = 0;
+    external_forces = 0;
     const auto tractions = boundary_tractions();
+    std::map<int, std::unique_ptr<FunctionParser<dim>>> traction_fields;
+    for (const auto &[id, expressions] : boundary_conditions.traction_fields)
+      {
+        traction_fields[id] = std::make_unique<FunctionParser<dim>>(dim);
+        try
+          {
+            traction_fields[id]->initialize(dim == 2 ? "x,y" : "x,y,z", expressions,
+                                            parameters.geometry_parameters);
+            Vector<double> probe(dim);
+            traction_fields[id]->vector_value(Point<dim>(), probe);
+          }
+        catch (const std::exception &)
+          {
+            throw std::invalid_argument("Loads/Traction: cannot evaluate the expressions of "
+                                        "boundary id " + std::to_string(id) +
+                                        "; use x, y, z and geometry parameters");
+          }
+      }
 
     FEValues<dim>     fe_values(*mapping, *fe, *quadrature,
                             update_gradients | update_values | update_JxW_values);
     FEFaceValues<dim> fe_face_values(*mapping, *fe, *face_quadrature,
-                                     update_values | update_JxW_values);
+                                     update_values | update_JxW_values |
+                                       update_quadrature_points);
     const FEValuesExtractors::Vector u(0);
+    Vector<double>                   field_value(dim);
     const unsigned int               n = fe->n_dofs_per_cell();
     FullMatrix<double>               cell_matrix(n, n);
     Vector<double>                   cell_rhs(n);
@@ -231,21 +256,34 @@ namespace compliant
           for (const auto f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               {
-                const auto t = tractions.find(cell->face(f)->boundary_id());
-                if (t == tractions.end())
+                const int  id    = cell->face(f)->boundary_id();
+                const auto t     = tractions.find(id);
+                const auto field = traction_fields.find(id);
+                if (t == tractions.end() && field == traction_fields.end())
                   continue;
                 fe_face_values.reinit(cell, f);
                 for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
-                  for (unsigned int i = 0; i < n; ++i)
-                    cell_rhs(i) += fe_face_values[u].value(i, q) * t->second *
-                                   fe_face_values.JxW(q) * thickness;
+                  {
+                    Tensor<1, dim> traction = t != tractions.end() ? t->second : Tensor<1, dim>();
+                    if (field != traction_fields.end())
+                      {
+                        field->second->vector_value(fe_face_values.quadrature_point(q), field_value);
+                        for (unsigned int d = 0; d < dim; ++d)
+                          traction[d] += field_value[d];
+                      }
+                    for (unsigned int i = 0; i < n; ++i)
+                      cell_rhs(i) += fe_face_values[u].value(i, q) * traction *
+                                     fe_face_values.JxW(q) * thickness;
+                  }
               }
           cell->get_dof_indices(dofs);
+          external_forces.add(dofs, cell_rhs);
           constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_matrix,
                                                  system_rhs);
         }
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
+    external_forces.compress(VectorOperation::add);
     statistics.assembly_seconds = timer.wall_time();
   }
 

@@ -64,6 +64,8 @@ namespace compliant
 
     dealii::PETScWrappers::MPI::SparseMatrix system_matrix;
     dealii::PETScWrappers::MPI::Vector       system_rhs;
+    // External forces without constraints applied: the reactions are f_int(u) - f_ext.
+    dealii::PETScWrappers::MPI::Vector       external_forces;
     dealii::PETScWrappers::MPI::Vector       solution; // ghosted (locally relevant)
     SolverStatistics                         statistics;
 

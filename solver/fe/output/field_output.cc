@@ -87,7 +87,9 @@ namespace compliant
         }
     data_out.add_data_vector(material_id, "material_id");
     data_out.add_data_vector(partition, "partition");
-    data_out.build_patches(*problem.mapping, problem.parameters.element_degree);
+    // Subdivided patches show the higher-order field; deal.II 9.4 supports them on hypercubes only.
+    const bool hypercube = problem.triangulation.all_reference_cells_are_hyper_cube();
+    data_out.build_patches(*problem.mapping, hypercube ? problem.parameters.element_degree : 1);
 
     DataOutBase::DataOutFilter filter(DataOutBase::DataOutFilterFlags(true, true));
     data_out.write_filtered_data(filter);

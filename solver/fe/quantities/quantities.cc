@@ -79,7 +79,9 @@ namespace compliant
         {
           const auto cell_and_point =
             GridTools::find_active_cell_around_point(*problem.mapping, problem.dof_handler, p);
-          if (cell_and_point.first->is_locally_owned())
+          // deal.II 9.4 returns an invalid iterator (rather than throwing) for outside points
+          if (cell_and_point.first.state() == IteratorState::valid &&
+              cell_and_point.first->is_locally_owned())
             {
               const Quadrature<dim> q(GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
               FEValues<dim>         fe_values(*problem.mapping, *problem.fe, q, update_values);
@@ -125,37 +127,35 @@ namespace compliant
     template <int dim>
     PETScWrappers::MPI::Vector reaction_vector(const LinearElasticProblem<dim> &problem)
     {
-      PETScWrappers::MPI::Vector residual(problem.locally_owned_dofs, problem.communicator);
       // The system matrix has the Dirichlet rows condensed away, so f_int is assembled afresh.
+      PETScWrappers::MPI::Vector residual(problem.locally_owned_dofs, problem.communicator);
       FEValues<dim> fe_values(*problem.mapping, *problem.fe, *problem.quadrature,
-                              update_gradients | update_values | update_JxW_values);
+                              update_gradients | update_JxW_values);
       const FEValuesExtractors::Vector u(0);
       const unsigned int               n = problem.fe->n_dofs_per_cell();
       Vector<double>                   cell_vector(n);
       std::vector<types::global_dof_index> dofs(n);
       std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
-      const auto &bc = problem.boundary_conditions;
       for (const auto &cell : problem.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
             fe_values[u].get_function_symmetric_gradients(problem.solution, strain);
-            const Material &material   = problem.materials.at(cell->material_id());
-            const auto      body_force = bc.body_force + material.density * bc.gravity;
-            cell_vector = 0;
+            const Material &material = problem.materials.at(cell->material_id());
+            cell_vector              = 0;
             for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
               {
                 double     sigma_zz;
                 const auto sigma = problem.stress(strain[q], material, sigma_zz);
                 for (unsigned int i = 0; i < n; ++i)
-                  cell_vector(i) += (sigma * fe_values[u].symmetric_gradient(i, q) -
-                                     body_force * fe_values[u].value(i, q)) *
+                  cell_vector(i) += (sigma * fe_values[u].symmetric_gradient(i, q)) *
                                     fe_values.JxW(q) * problem.thickness;
               }
             cell->get_dof_indices(dofs);
             residual.add(dofs, cell_vector);
           }
       residual.compress(VectorOperation::add);
+      residual -= problem.external_forces;
       return residual;
     }
   } // namespace

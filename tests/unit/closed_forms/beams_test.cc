@@ -138,3 +138,16 @@ TEST(Beams, BadInputThrowsNamingTheParameter)
   EXPECT_THROW(euler_bernoulli_guided_stiffness(0.0, E, b, h), std::invalid_argument);
   EXPECT_THROW(euler_bernoulli_cantilever_frequency(1, 10.0, E, -1.0, b, h), std::invalid_argument);
 }
+
+// The elasticity solution's shear deflection (4+5nu) P L/(2 E b h) is the Timoshenko beam's
+// P L/(kappa G A) with the effective kappa = 4(1+nu)/(4+5nu) (Augarde and Deeks 2008).
+TEST(Beams, TimoshenkoGoodierIsABeamWithItsOwnShearCoefficient)
+{
+  for (const double nu : {0.0, 0.25, 0.3, 0.49})
+    {
+      const double kappa = 4.0 * (1.0 + nu) / (4.0 + 5.0 * nu);
+      const double beam  = closed_forms::timoshenko_cantilever_deflection(2.0, 48.0, 3e4, nu, 1.0, 12.0, kappa);
+      EXPECT_NEAR(closed_forms::timoshenko_goodier_cantilever_deflection(2.0, 48.0, 3e4, nu, 1.0, 12.0),
+                  beam, 1e-14 * beam);
+    }
+}

@@ -1,0 +1,72 @@
+#!/usr/bin/python3
+"""The command line as a user meets it: --help documents every parameter (generated from the
+code), --check validates without output, --set overrides, and each kind of bad input gives a
+message naming the file/parameter, a non-zero exit and no output folder."""
+import os
+import subprocess
+import sys
+import tempfile
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.join(here, "..", "..")
+solver = os.environ["COMPLIANT_SOLVER"]
+case = os.path.join(root, "cases", "flexure_hinge.prm")
+failed = []
+
+
+def run(args, np=2):
+    cmd = ["mpirun", "-np", str(np), solver] + args
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    return p.returncode, p.stdout, p.stderr
+
+
+def check(ok, text):
+    print(("PASS  " if ok else "FAIL  ") + text)
+    if not ok:
+        failed.append(text)
+
+
+rc, out, err = run(["--help"], np=1)
+check(rc == 0 and "Total force" in out and "prbm_pivot_stiffness" in out and "semiflex" in out,
+      "--help lists parameters, closed forms and materials")
+rc, out, err = run([case, "--help"], np=1)
+check(rc == 0 and "set l " in out and "flexure length" in out, "--help with a case lists the .geo parameters with their help")
+rc, out, err = run([case, "--check"])
+check(rc == 0 and "is valid" in out, "--check accepts the default case")
+
+
+def bad(name, args, must_contain, extra_file=None):
+    out_dir = tempfile.mkdtemp(prefix="compliant-bad-")
+    os.rmdir(out_dir)
+    rc, out, err = run(args + ["--set", "Output/Directory=" + out_dir])
+    ok = rc != 0 and all(m in err for m in must_contain) and not os.path.exists(out_dir)
+    check(ok, "%s: exit %d, message names %s, no output" % (name, rc, must_contain))
+    if not ok:
+        print(err[-1500:])
+
+
+def write_case(text):
+    f = tempfile.NamedTemporaryFile("w", suffix=".prm", delete=False, dir=os.path.join(root, "cases"))
+    f.write(text)
+    f.close()
+    return f.name
+
+
+with open(case) as f:
+    base = f.read()
+misspelled = write_case(base.replace("set Clamped = base", "set Clampd = base"))
+try:
+    bad("misspelled parameter", [misspelled], [os.path.basename(misspelled), "Clampd", "Line"])
+finally:
+    os.remove(misspelled)
+bad("bad value", [case, "--set", "Discretization/Element degree=7"], ["Element degree"])
+bad("unknown boundary name", [case, "--set", "Boundary conditions/Clamped=bse"], ["bse", "base", "drive"])
+bad("unknown body name", [case, "--set", "Material/Materials=bdy: steel"], ["bdy", "body"])
+bad("unknown material", [case, "--set", "Material/Materials=*: unobtainium"], ["unobtainium", "semiflex"])
+bad("unknown geometry parameter", [case, "--set", "Geometry/Parameters/length=3"], ["length"])
+bad("missing mesh file", [case, "--set", "Geometry/Mesh file=nothing.geo"], ["nothing.geo"])
+bad("unknown closed form", [case, "--set", "Comparison/Checks=rotational_stiffness_drive ~ prbm_pivot(E=E)"], ["prbm_pivot", "Comparison/Checks"])
+bad("bad expression", [case, "--set", "Boundary conditions/Rotation=drive: degrees=1, center=q/2 0"], ["center", "q/2"])
+bad("point outside the mesh", [case, "--set", "Quantities/Points=far: 1000 0"], ["far", "outside"])
+bad("missing case file", [os.path.join(root, "cases", "no_such_case.prm")], ["no_such_case.prm"])
+sys.exit(1 if failed else 0)
