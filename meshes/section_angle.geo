@@ -10,7 +10,7 @@ DefineConstant[ t = {4, Name "Parameters/t", Help "leg thickness"} ];
 DefineConstant[ r = {2, Name "Parameters/r", Help "fillet radius of the inner corner (0: sharp)"} ];
 DefineConstant[ n = {4, Name "Parameters/n", Help "elements through the thickness"} ];
 DefineConstant[ quads = {0, Name "Parameters/quads", Help "1: quadrilaterals, 0: triangles"} ];
-h = t / n;
+lc = t / n;
 X[] = {0, b1, b1, t, t, 0};
 Y[] = {0, 0, t, t, b2, b2};
 F[] = {0, 0, 0, 1, 0, 0};
@@ -22,14 +22,14 @@ For i In {0:N-1}
   ux = X[i] - X[ip]; uy = Y[i] - Y[ip]; lu = Sqrt(ux^2 + uy^2); ux = ux / lu; uy = uy / lu;
   wx = X[inext] - X[i]; wy = Y[inext] - Y[i]; lw = Sqrt(wx^2 + wy^2); wx = wx / lw; wy = wy / lw;
   If (F[i] && r > 0)
-    // at least 4 segments per quarter circle
-    h_arc = (h < Pi * r / 8 ? h : Pi * r / 8);
-    pa[i] = newp; Point(pa[i]) = {X[i] - r * ux, Y[i] - r * uy, 0, h_arc};
-    pc = newp; Point(pc) = {X[i] - r * ux + r * wx, Y[i] - r * uy + r * wy, 0, h_arc};
-    pb[i] = newp; Point(pb[i]) = {X[i] + r * wx, Y[i] + r * wy, 0, h_arc};
+    // at least 8 facets per quarter circle: a concave kink of at most 11.25 degrees per vertex
+    lc_arc = (lc < Pi * r / 16 ? lc : Pi * r / 16);
+    pa[i] = newp; Point(pa[i]) = {X[i] - r * ux, Y[i] - r * uy, 0, lc_arc};
+    pc = newp; Point(pc) = {X[i] - r * ux + r * wx, Y[i] - r * uy + r * wy, 0, lc_arc};
+    pb[i] = newp; Point(pb[i]) = {X[i] + r * wx, Y[i] + r * wy, 0, lc_arc};
     arc[i] = newl; Circle(arc[i]) = {pa[i], pc, pb[i]};
   Else
-    pa[i] = newp; Point(pa[i]) = {X[i], Y[i], 0, h};
+    pa[i] = newp; Point(pa[i]) = {X[i], Y[i], 0, lc};
     pb[i] = pa[i]; arc[i] = 0;
   EndIf
 EndFor
@@ -42,8 +42,9 @@ For i In {0:N-1}
 EndFor
 Curve Loop(1) = edges[]; Plane Surface(1) = {1};
 If (quads)
-  // Frontal-Delaunay for quads, then Blossom full-quad recombination: all cells quadrilateral.
-  Mesh.Algorithm = 8; Mesh.RecombinationAlgorithm = 3; Recombine Surface{1};
+  // Blossom full-quad recombination: all cells quadrilateral, about lc / 2 (each is split in
+  // four); the Frontal-Delaunay-for-quads algorithm (8) crashes gmsh 4.8.4 here.
+  Mesh.RecombinationAlgorithm = 3; Recombine Surface{1};
 EndIf
 Physical Curve("boundary") = {edges[]};
 Physical Surface("section") = {1};

@@ -6,9 +6,12 @@
 
 Prints, for every ratio a/b, cell type and degree, the relative errors of J, Gamma and tau_max and
 the observed orders log2(e(n) / e(2n)) (n = elements across the short side b). With --min-rate the
-script fails unless every J order between successive meshes is at least R times 2 * degree (the
-energy-norm order squared: J_h - J = |omega - omega_h|^2_energy for smooth omega) and every J_h >=
-J (the FE torsion constant is an upper bound).
+script fails unless every J order between successive meshes is at least R times min(2 p, 4) and
+every J_h >= J (the FE torsion constant is an upper bound). Why min(2 p, 4): J_h - J equals the
+squared energy-norm error of omega_h (Galerkin orthogonality), of order h^(2p) for a smooth omega,
+but at the corners of a rectangle omega has an r^2 log r term (the Neumann corner exponents of a
+90-degree corner are the even integers; the series of omega converges like 1/n^3 there), which
+caps the energy-norm order at 2. Measured: 1.9-2.0 (p = 1), 3.6-3.8 (p = 2), 3.9-4.0 (p = 3).
 """
 import argparse
 import math
@@ -79,9 +82,10 @@ def main():
                             failures.append("a/b=%g %s p=%d n=%d: J_h below the series (%+.2e)" % (
                                 ratio, cells, degree, n, r["J"]))
                         if previous and abs(previous["J"]) > 1e-10 and \
-                                orders["J"] < args.min_rate * 2 * degree:
+                                orders["J"] < args.min_rate * min(2 * degree, 4):
                             failures.append("a/b=%g %s p=%d n=%d: J order %.2f < %.2f" % (
-                                ratio, cells, degree, n, orders["J"], args.min_rate * 2 * degree))
+                                ratio, cells, degree, n, orders["J"],
+                                args.min_rate * min(2 * degree, 4)))
                     previous = r
     if args.markdown:
         with open(args.markdown, "w") as f:

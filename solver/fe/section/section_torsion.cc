@@ -15,6 +15,7 @@
 #include "section/section_properties.h"
 #include "section/warping_problem.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -25,9 +26,12 @@ using namespace compliant::section;
 
 namespace
 {
-  // A polygonal fillet turns by a few degrees per vertex; sharper concave corners are reported.
-  constexpr double corner_excess_degrees = 5.0;
-  // A peak within this many cell sizes of a reentrant corner is taken to be the singularity.
+  // Concave kinks smaller than this are facets of a curved boundary, not modelled corners.
+  constexpr double facet_kink_degrees = 5.0;
+  // A corner of at least this interior angle is a modelled sharp corner (a 90-degree fillet
+  // drawn with 4 facets or more turns by at most 22.5 degrees per vertex).
+  constexpr double sharp_corner_degrees = 210.0;
+  // A peak within this many cell sizes of a concave vertex is taken to be caused by it.
   constexpr double corner_reach_in_cells = 2.0;
 
   void print_help(const dealii::ParameterHandler &prm, bool with_case)
@@ -57,22 +61,45 @@ namespace
     return s.str();
   }
 
-  // Warnings on the peak stress: reentrant corners make it mesh-dependent.
-  std::vector<std::string> stress_warnings(const std::vector<BoundaryCorner> &corners,
+  std::string degrees(const double radians)
+  {
+    return std::to_string(int(std::round(radians * 180 / M_PI)));
+  }
+
+  bool is_sharp(const BoundaryCorner &c)
+  {
+    return c.interior_angle >= sharp_corner_degrees * M_PI / 180;
+  }
+
+  // Warnings on the peak stress: concave vertices make it mesh-dependent.
+  std::vector<std::string> stress_warnings(const std::vector<BoundaryCorner> &concave,
                                            const SectionProperties           &section)
   {
     std::vector<std::string> warnings;
-    for (const auto &c : corners)
-      if (c.location.distance(section.max_shear_location) <= corner_reach_in_cells * c.cell_size)
-        warnings.push_back(
-          "the peak shear stress is at the reentrant corner " + format_point(c.location) +
-          " (interior angle " + std::to_string(int(std::round(c.interior_angle * 180 / M_PI))) +
-          " degrees), where the exact stress is infinite: the value grows with mesh refinement. "
-          "Round the corner (fillet) for a meaningful peak; J and Gamma are not affected.");
-    if (warnings.empty() && !corners.empty())
-      warnings.push_back("the section has " + std::to_string(corners.size()) +
+    const BoundaryCorner    *nearest = nullptr;
+    for (const auto &c : concave)
+      if (c.location.distance(section.max_shear_location) <= corner_reach_in_cells * c.cell_size &&
+          (!nearest || c.location.distance(section.max_shear_location) <
+                         nearest->location.distance(section.max_shear_location)))
+        nearest = &c;
+    const auto n_sharp = std::count_if(concave.begin(), concave.end(), is_sharp);
+    if (nearest && is_sharp(*nearest))
+      warnings.push_back(
+        "the peak shear stress is at the reentrant corner " + format_point(nearest->location) +
+        " (interior angle " + degrees(nearest->interior_angle) +
+        " degrees), where the exact stress is infinite: the value grows with mesh refinement. "
+        "Round the corner (fillet) for a meaningful peak; J and Gamma are not affected.");
+    else if (nearest)
+      warnings.push_back(
+        "the peak shear stress is at a concave vertex of a faceted curve " +
+        format_point(nearest->location) + " (interior angle " +
+        degrees(nearest->interior_angle) +
+        " degrees): check it with a finer gmsh mesh of that curve (Global refinements keep the "
+        "facets).");
+    else if (n_sharp > 0)
+      warnings.push_back("the section has " + std::to_string(n_sharp) +
                          " reentrant corner(s) with infinite shear stress; the reported peak lies "
-                         "elsewhere, but refine near them before trusting local stresses there");
+                         "elsewhere, but local stresses near them are mesh-dependent");
     return warnings;
   }
 
@@ -102,8 +129,8 @@ namespace
 
     problem.solve();
     const SectionProperties s = compute_section_properties(problem);
-    const auto corners = reentrant_corners(problem.triangulation, corner_excess_degrees * M_PI / 180);
-    const auto warnings = stress_warnings(corners, s);
+    const auto concave  = reentrant_corners(problem.triangulation, facet_kink_degrees * M_PI / 180);
+    const auto warnings = stress_warnings(concave, s);
 
     RunSummary summary;
     summary.case_file  = c.case_file;
@@ -136,7 +163,7 @@ namespace
     q["max_shear_stress"]                = std::abs(c.torque) * s.max_shear_factor / s.torsion_constant;
     q["max_shear_stress_x"]              = s.max_shear_location[0];
     q["max_shear_stress_y"]              = s.max_shear_location[1];
-    q["reentrant_corners"]               = corners.size();
+    q["reentrant_corners"] = std::count_if(concave.begin(), concave.end(), is_sharp);
     q["n_cells"]                         = problem.triangulation.n_active_cells();
     q["n_dofs"]                          = problem.dof_handler.n_dofs();
 
