@@ -4,16 +4,15 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+
 #include <closed_forms/registry.h>
 
-#include "elasticity/linear_elastic_problem.h"
+#include "analyses/analysis.h"
+#include "elasticity/material.h"
 #include "input/case_file.h"
-#include "output/field_output.h"
-#include "output/summary.h"
-#include "quantities/comparison.h"
-#include "quantities/quantities.h"
 
-#include <filesystem>
 #include <iostream>
 
 using namespace compliant;
@@ -59,87 +58,6 @@ namespace
     return geometry;
   }
 
-  template <int dim>
-  int run(const CaseParameters &p, const MeshedGeometry &geometry, bool check_only, MPI_Comm comm)
-  {
-    const bool   root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-    dealii::Timer timer;
-    LinearElasticProblem<dim> problem(p, geometry, comm);
-    const auto requests = parse_checks(p.checks);
-    try
-      {
-        problem.setup();
-        validate_quantity_requests(problem);
-      }
-    catch (const std::invalid_argument &e)
-      {
-        throw InputError("case file '" + p.case_file + "': " + e.what());
-      }
-    if (root)
-      std::cout << "Mesh: " << problem.triangulation.n_active_cells() << " cells, "
-                << problem.dof_handler.n_dofs() << " DoFs (degree " << p.element_degree << ", "
-                << p.model << ") on " << dealii::Utilities::MPI::n_mpi_processes(comm)
-                << " ranks" << std::endl;
-    if (check_only)
-      {
-        if (root)
-          std::cout << "Case '" << p.case_file << "' is valid." << std::endl;
-        return 0;
-      }
-
-    problem.assemble();
-    problem.solve();
-    if (root)
-      std::cout << "Solved: " << problem.statistics.iterations << " iterations ("
-                << p.solver_method << "), assembly " << problem.statistics.assembly_seconds
-                << " s, solve " << problem.statistics.solve_seconds << " s" << std::endl;
-
-    RunSummary summary;
-    summary.case_file  = p.case_file;
-    summary.settings   = {{"model", p.model},
-                        {"mesh_file", p.mesh_file},
-                        {"element_degree", std::to_string(p.element_degree)},
-                        {"cell_type", problem.triangulation.all_reference_cells_are_hyper_cube() ?
-                                        "hypercube" : "simplex"},
-                        {"solver", p.solver_method}};
-    summary.parameters = p.geometry_parameters;
-    summary.quantities = compute_quantities(problem);
-    summary.quantities["time_setup"]    = problem.statistics.setup_seconds;
-    summary.quantities["time_assembly"] = problem.statistics.assembly_seconds;
-    summary.quantities["time_solve"]    = problem.statistics.solve_seconds;
-
-    // Names usable in Derived and Checks expressions.
-    auto variables = p.geometry_parameters;
-    variables["thickness"] = problem.thickness;
-    const Material &first_material = problem.materials.begin()->second;
-    variables["E"]  = first_material.youngs_modulus;
-    variables["nu"] = first_material.poissons_ratio;
-    variables["G"]  = first_material.shear_modulus();
-    try
-      {
-        add_derived_quantities(p.derived, summary.quantities, variables);
-        summary.comparisons = run_checks(requests, summary.quantities, variables);
-      }
-    catch (const std::invalid_argument &e)
-      {
-        throw InputError("case file '" + p.case_file + "': " + e.what());
-      }
-
-    if (root)
-      std::filesystem::create_directories(p.output_directory);
-    MPI_Barrier(comm);
-    if (p.write_fields)
-      write_fields(problem, p.output_directory);
-    summary.quantities["time_total"] = timer.wall_time();
-    if (root)
-      {
-        write_summary(summary, p.output_directory + "/summary.json");
-        std::cout << "\n" << format_table(summary) << "\nResults in " << p.output_directory
-                  << "/ (summary.json" << (p.write_fields ? ", fields.xdmf" : "") << ")"
-                  << std::endl;
-      }
-    return 0;
-  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -161,8 +79,7 @@ int main(int argc, char **argv)
       if (p.case_file.empty())
         throw InputError("no case file given (try --help)");
       const MeshedGeometry geometry = mesh_on_rank_zero(p, comm);
-      return p.dimension == 2 ? run<2>(p, geometry, command_line.check, comm) :
-                                run<3>(p, geometry, command_line.check, comm);
+      return find_analysis(p.analysis).run({p, prm, geometry, command_line.check, comm});
     }
   catch (const InputError &e)
     {

@@ -335,6 +335,18 @@ namespace compliant
     statistics.solve_seconds = timer.wall_time();
   }
 
+  template <int dim>
+  std::map<std::string, double> LinearElasticProblem<dim>::expression_variables() const
+  {
+    auto            variables = parameters.geometry_parameters;
+    const Material &first     = materials.begin()->second;
+    variables["thickness"]    = thickness;
+    variables["E"]            = first.youngs_modulus;
+    variables["nu"]           = first.poissons_ratio;
+    variables["G"]            = first.shear_modulus();
+    return variables;
+  }
+
   template class LinearElasticProblem<2>;
   template class LinearElasticProblem<3>;
 } // namespace compliant

@@ -69,6 +69,10 @@ namespace compliant
     dealii::PETScWrappers::MPI::Vector       solution; // ghosted (locally relevant)
     SolverStatistics                         statistics;
 
+    // Names usable in Derived and Checks expressions: geometry parameters, thickness, and E, nu,
+    // G of the first body's material.
+    std::map<std::string, double> expression_variables() const;
+
   private:
     void make_constraints();
     // Traction from Loads/Traction and Loads/Total force, per boundary id.

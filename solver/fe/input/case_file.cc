@@ -1,5 +1,6 @@
 #include "input/case_file.h"
 
+#include "analyses/analysis.h"
 #include "input/spec_list.h"
 
 #include <fstream>
@@ -21,8 +22,16 @@ namespace compliant
                       Patterns::Selection("plane stress|plane strain|3d"),
                       "Kinematic model: 2D plane stress (uses Material/Thickness), 2D plane "
                       "strain, or 3D solid. Must match the dimension of the mesh.");
-    prm.declare_entry("Analysis", "linear static", Patterns::Selection("linear static"),
-                      "Kind of analysis.");
+    std::string names, documentation;
+    for (const auto &a : analyses())
+      {
+        names += (names.empty() ? "" : "|") + a.name;
+        documentation += " '" + a.name + "': " + a.documentation + ".";
+      }
+    prm.declare_entry("Analysis", "linear static", Patterns::Selection(names),
+                      "Kind of analysis." + documentation);
+    for (const auto &a : analyses())
+      a.declare_parameters(prm);
 
     prm.enter_subsection("Geometry");
     {

@@ -1,0 +1,55 @@
+#include "analyses/analysis.h"
+
+#include <deal.II/base/utilities.h>
+
+#include "analyses/linear_static.h"
+
+#include <filesystem>
+#include <iostream>
+
+namespace compliant
+{
+  const std::vector<Analysis> &analyses()
+  {
+    static const std::vector<Analysis> list = {linear_static_analysis()};
+    return list;
+  }
+
+  const Analysis &find_analysis(const std::string &name)
+  {
+    for (const auto &a : analyses())
+      if (a.name == name)
+        return a;
+    throw InputError("unknown analysis '" + name + "'");
+  }
+
+  void finish_run(const RunContext &context, RunSummary &summary,
+                  const std::map<std::string, double>            &variables,
+                  const std::function<void(const std::string &)> &write_fields)
+  {
+    const auto &p    = context.parameters;
+    const bool  root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
+    try
+      {
+        add_derived_quantities(p.derived, summary.quantities, variables);
+        summary.comparisons = run_checks(parse_checks(p.checks), summary.quantities, variables);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("case file '" + p.case_file + "': " + e.what());
+      }
+    if (root)
+      std::filesystem::create_directories(p.output_directory);
+    MPI_Barrier(context.communicator);
+    if (p.write_fields && write_fields)
+      write_fields(p.output_directory);
+    if (root)
+      {
+        write_summary(summary, p.output_directory + "/summary.json");
+        std::cout << "\n"
+                  << format_table(summary) << "\nResults in " << p.output_directory
+                  << "/ (summary.json" << (p.write_fields ? ", fields.xdmf" : "") << ")"
+                  << std::endl;
+      }
+  }
+} // namespace compliant

@@ -1,0 +1,46 @@
+// The kinds of analysis a case can ask for (Analysis = ...). Each one declares its own case-file
+// subsection and runs from the common inputs; new analyses are added to the list in analysis.cc.
+#pragma once
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include "input/case_file.h"
+#include "mesh/gmsh_geometry.h"
+#include "output/summary.h"
+#include "quantities/comparison.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace compliant
+{
+  struct RunContext
+  {
+    const CaseParameters           &parameters;
+    const dealii::ParameterHandler &prm;
+    const MeshedGeometry           &geometry;
+    bool                            check_only;
+    MPI_Comm                        communicator;
+  };
+
+  struct Analysis
+  {
+    std::string name;
+    std::string documentation;
+    // Declares the analysis' own entries (in its own subsection); may do nothing.
+    std::function<void(dealii::ParameterHandler &)> declare_parameters;
+    // Runs the case; returns the exit code. Throws InputError for case-file mistakes.
+    std::function<int(const RunContext &)> run;
+  };
+
+  const std::vector<Analysis> &analyses();
+  const Analysis              &find_analysis(const std::string &name);
+
+  // Shared end of a run: derived quantities, closed-form comparisons, fields, summary, table.
+  // Everything that can fail on user input happens before the first file is written.
+  void finish_run(const RunContext &context, RunSummary &summary,
+                  const std::map<std::string, double>         &variables,
+                  const std::function<void(const std::string &)> &write_fields);
+} // namespace compliant
