@@ -61,7 +61,7 @@ def main():
     ap.add_argument("--min-rate", type=float)
     ap.add_argument("--markdown")
     args = ap.parse_args()
-    lines = ["| a/b | cells | p | n | cells | DoFs | J err | order | Gamma err | order | tau_max err | order |",
+    lines = ["| a/b | cell type | p | n | cells | DoFs | J err | order | Gamma err | order | tau_max err | order |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     failures = []
     for ratio in [float(r) for r in args.ratios.split(",")]:

@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include "analyses/linear_static.h"
+#include "analyses/modal.h"
 
 #include <filesystem>
 #include <iostream>
@@ -11,7 +12,7 @@ namespace compliant
 {
   const std::vector<Analysis> &analyses()
   {
-    static const std::vector<Analysis> list = {linear_static_analysis()};
+    static const std::vector<Analysis> list = {linear_static_analysis(), modal_analysis()};
     return list;
   }
 

@@ -63,6 +63,9 @@ namespace compliant
       }
     else if (triangulation.all_reference_cells_are_simplex())
       {
+        if (degree > 2) // FE_SimplexP<2>(3) crashes in deal.II 9.4.1
+          throw std::invalid_argument("Discretization/Element degree: triangles and tetrahedra "
+                                      "support degree 1 or 2, not " + std::to_string(degree));
         fe              = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
         mapping         = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
         quadrature      = std::make_unique<QGaussSimplex<dim>>(degree + 1);

@@ -41,7 +41,7 @@ namespace compliant
                         "Relative paths are looked up next to the case file, then in meshes/.");
       prm.enter_subsection("Parameters");
       for (const auto &p : geometry_parameters)
-        prm.declare_entry(p.name, dealii::Utilities::to_string(p.value, 17), Patterns::Double(),
+        prm.declare_entry(p.name, round_trip_text(p.value), Patterns::Double(),
                           p.help.empty() ? "Geometry parameter of the .geo file." : p.help);
       prm.leave_subsection();
     }
@@ -262,54 +262,63 @@ namespace compliant
     }
   } // namespace
 
-  CaseParameters read_case(const CommandLine &command_line, ParameterHandler &prm)
+  ParsedParameterFile read_parameter_file(const CommandLine      &command_line,
+                                          ParameterHandler       &prm,
+                                          const ParameterDeclarer &declare)
   {
-    CaseParameters p;
-    p.case_file = command_line.case_file;
-
-    // Pass 1: only the mesh file matters; it decides which geometry parameters exist.
+    const std::string             &file = command_line.case_file;
     std::vector<GeometryParameter> geometry_parameters;
-    std::string                    mesh_file;
-    if (!p.case_file.empty())
+    ParsedParameterFile            parsed;
+    if (!file.empty())
       {
         ParameterHandler first_pass;
-        declare_case_parameters(first_pass, {});
-        parse_file(first_pass, p.case_file, true);
+        declare(first_pass, {});
+        parse_file(first_pass, file, true);
         for (const auto &o : command_line.overrides)
           apply_override(first_pass, o, true);
         first_pass.enter_subsection("Geometry");
-        mesh_file = resolve_mesh_file(first_pass.get("Mesh file"), p.case_file);
+        parsed.mesh_file = resolve_mesh_file(first_pass.get("Mesh file"), file);
         first_pass.leave_subsection();
-        if (mesh_file.empty())
-          throw InputError("case file '" + p.case_file +
+        if (parsed.mesh_file.empty())
+          throw InputError("case file '" + file +
                            "': Geometry/Mesh file is empty; expected a .geo or .msh file");
         try
           {
-            geometry_parameters = read_geometry_parameters(mesh_file);
+            geometry_parameters = read_geometry_parameters(parsed.mesh_file);
           }
         catch (const std::exception &e)
           {
-            throw InputError("case file '" + p.case_file + "', Geometry/Mesh file: " + e.what());
+            throw InputError("case file '" + file + "', Geometry/Mesh file: " + e.what());
           }
       }
-
-    declare_case_parameters(prm, geometry_parameters);
-    if (p.case_file.empty())
-      return p;
-    parse_file(prm, p.case_file, false);
+    declare(prm, geometry_parameters);
+    if (file.empty())
+      return parsed;
+    parse_file(prm, file, false);
     for (const auto &o : command_line.overrides)
       apply_override(prm, o, false);
+    prm.enter_subsection("Geometry");
+    prm.enter_subsection("Parameters");
+    for (const auto &g : geometry_parameters)
+      parsed.geometry_parameters[g.name] = prm.get_double(g.name);
+    prm.leave_subsection();
+    prm.leave_subsection();
+    return parsed;
+  }
+
+  CaseParameters read_case(const CommandLine &command_line, ParameterHandler &prm)
+  {
+    CaseParameters p;
+    p.case_file       = command_line.case_file;
+    const auto parsed = read_parameter_file(command_line, prm, declare_case_parameters);
+    if (p.case_file.empty())
+      return p;
+    p.mesh_file           = parsed.mesh_file;
+    p.geometry_parameters = parsed.geometry_parameters;
 
     p.model     = prm.get("Model");
     p.dimension = p.model == "3d" ? 3 : 2;
     p.analysis  = prm.get("Analysis");
-    p.mesh_file = mesh_file;
-    prm.enter_subsection("Geometry");
-    prm.enter_subsection("Parameters");
-    for (const auto &g : geometry_parameters)
-      p.geometry_parameters[g.name] = prm.get_double(g.name);
-    prm.leave_subsection();
-    prm.leave_subsection();
 
     prm.enter_subsection("Discretization");
     p.element_degree     = prm.get_integer("Element degree");

@@ -6,6 +6,7 @@
 
 #include "mesh/gmsh_geometry.h"
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -64,6 +65,20 @@ namespace compliant
   };
 
   CommandLine parse_command_line(int argc, char **argv);
+
+  // Two-pass reading of any parameter file whose geometry parameters come from its .geo file:
+  // pass 1 finds Geometry/Mesh file, its ONELAB parameters are declared (by `declare`), pass 2
+  // parses the file and applies the --set overrides. Throws InputError naming file and entry.
+  struct ParsedParameterFile
+  {
+    std::string                   mesh_file; // resolved
+    std::map<std::string, double> geometry_parameters;
+  };
+  using ParameterDeclarer =
+    std::function<void(dealii::ParameterHandler &, const std::vector<GeometryParameter> &)>;
+  ParsedParameterFile read_parameter_file(const CommandLine &command_line,
+                                          dealii::ParameterHandler &prm,
+                                          const ParameterDeclarer &declare);
 
   // Reads the case file in two passes (the .geo file decides which geometry parameters exist),
   // applies --set overrides and validates values. Throws InputError naming file and entry.

@@ -1,5 +1,6 @@
 #include "input/spec_list.h"
 
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -12,6 +13,20 @@ namespace compliant
       return "";
     const auto last = s.find_last_not_of(" \t\r\n");
     return s.substr(first, last - first + 1);
+  }
+
+  std::string round_trip_text(const double value)
+  {
+    for (int digits = 6; digits < 17; ++digits)
+      {
+        std::ostringstream s;
+        s << std::setprecision(digits) << value;
+        if (std::stod(s.str()) == value)
+          return s.str();
+      }
+    std::ostringstream s;
+    s << std::setprecision(17) << value;
+    return s.str();
   }
 
   std::vector<std::string> split(const std::string &s, char separator)

@@ -33,5 +33,7 @@ namespace compliant
   std::vector<double> parse_numbers(const std::string &text, const std::string &where);
 
   std::string trim(const std::string &s);
+  // Shortest text that reads back as the same double.
+  std::string round_trip_text(double value);
   std::vector<std::string> split(const std::string &s, char separator);
 } // namespace compliant

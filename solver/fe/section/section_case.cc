@@ -4,11 +4,14 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 
 namespace compliant::section
 {
   using dealii::ParameterHandler;
   namespace Patterns = dealii::Patterns;
+
 
   void declare_section_parameters(ParameterHandler                     &prm,
                                   const std::vector<GeometryParameter> &geometry_parameters)
@@ -21,7 +24,7 @@ namespace compliant::section
                         "looked up next to the case file, then in meshes/.");
       prm.enter_subsection("Parameters");
       for (const auto &p : geometry_parameters)
-        prm.declare_entry(p.name, dealii::Utilities::to_string(p.value, 17), Patterns::Double(),
+        prm.declare_entry(p.name, round_trip_text(p.value), Patterns::Double(),
                           p.help.empty() ? "Geometry parameter of the .geo file." : p.help);
       prm.leave_subsection();
     }
@@ -88,101 +91,16 @@ namespace compliant::section
     prm.leave_subsection();
   }
 
-  namespace
-  {
-    // Applies "A/B/Name=value"; names the override on failure.
-    void apply_override(ParameterHandler &prm, const std::string &text, bool ignore_undeclared)
-    {
-      const auto eq = text.find('=');
-      if (eq == std::string::npos)
-        throw InputError("--set \"" + text + "\": expected \"Section/Name=value\"");
-      auto              parts = split(trim(text.substr(0, eq)), '/');
-      const std::string name  = parts.back();
-      parts.pop_back();
-      unsigned int depth = 0;
-      std::string  error;
-      try
-        {
-          for (const auto &section : parts)
-            {
-              prm.enter_subsection(section);
-              ++depth;
-            }
-          prm.set(name, trim(text.substr(eq + 1)));
-        }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-      for (; depth > 0; --depth)
-        prm.leave_subsection();
-      if (!error.empty() && !ignore_undeclared)
-        throw InputError("--set \"" + text + "\": no such parameter, or value not allowed");
-    }
-
-    void parse_file(ParameterHandler &prm, const std::string &file, bool skip_undefined)
-    {
-      if (!std::ifstream(file).good())
-        throw InputError("case file '" + file + "' cannot be opened");
-      try
-        {
-          prm.parse_input(file, "", skip_undefined, true);
-        }
-      catch (const std::exception &e)
-        {
-          // deal.II's message carries a banner; the useful part follows "Additional information".
-          std::string message = e.what();
-          const auto  pos     = message.find("Additional information:");
-          if (pos != std::string::npos)
-            message = message.substr(pos + 23);
-          const auto end = message.find("Stacktrace:");
-          throw InputError("case file '" + file + "': " + trim(message.substr(0, end)));
-        }
-    }
-  } // namespace
-
   SectionCase read_section_case(const CommandLine &command_line, ParameterHandler &prm)
   {
     SectionCase c;
     c.case_file = command_line.case_file;
 
-    std::vector<GeometryParameter> geometry_parameters;
-    if (!c.case_file.empty())
-      {
-        ParameterHandler first_pass;
-        declare_section_parameters(first_pass, {});
-        parse_file(first_pass, c.case_file, true);
-        for (const auto &o : command_line.overrides)
-          apply_override(first_pass, o, true);
-        first_pass.enter_subsection("Geometry");
-        c.mesh_file = resolve_mesh_file(first_pass.get("Mesh file"), c.case_file);
-        first_pass.leave_subsection();
-        if (c.mesh_file.empty())
-          throw InputError("case file '" + c.case_file +
-                           "': Geometry/Mesh file is empty; expected a .geo or .msh file");
-        try
-          {
-            geometry_parameters = read_geometry_parameters(c.mesh_file);
-          }
-        catch (const std::exception &e)
-          {
-            throw InputError("case file '" + c.case_file + "', Geometry/Mesh file: " + e.what());
-          }
-      }
-
-    declare_section_parameters(prm, geometry_parameters);
+    const auto parsed = read_parameter_file(command_line, prm, declare_section_parameters);
     if (c.case_file.empty())
       return c;
-    parse_file(prm, c.case_file, false);
-    for (const auto &o : command_line.overrides)
-      apply_override(prm, o, false);
-
-    prm.enter_subsection("Geometry");
-    prm.enter_subsection("Parameters");
-    for (const auto &g : geometry_parameters)
-      c.geometry_parameters[g.name] = prm.get_double(g.name);
-    prm.leave_subsection();
-    prm.leave_subsection();
+    c.mesh_file           = parsed.mesh_file;
+    c.geometry_parameters = parsed.geometry_parameters;
 
     prm.enter_subsection("Discretization");
     c.element_degree     = prm.get_integer("Element degree");

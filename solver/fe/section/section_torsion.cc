@@ -88,7 +88,8 @@ namespace
         "the peak shear stress is at the reentrant corner " + format_point(nearest->location) +
         " (interior angle " + degrees(nearest->interior_angle) +
         " degrees), where the exact stress is infinite: the value grows with mesh refinement. "
-        "Round the corner (fillet) for a meaningful peak; J and Gamma are not affected.");
+        "Round the corner (fillet) for a meaningful peak; J and Gamma stay finite (they converge, "
+        "more slowly).");
     else if (nearest)
       warnings.push_back(
         "the peak shear stress is at a concave vertex of a faceted curve " +

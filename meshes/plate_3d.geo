@@ -1,0 +1,19 @@
+// Rectangular plate, 3D, structured hexahedra: x in [0, a], y in [0, b], z in [-t/2, t/2].
+// Boundaries: bottom (z = -t/2), top (z = t/2), sides (the four lateral faces). Body: plate.
+// Edges are where two boundaries meet, e.g. 'bottom & sides' for the edges of the bottom face.
+DefineConstant[ a = {10, Name "Parameters/a", Help "length along x"} ];
+DefineConstant[ b = {10, Name "Parameters/b", Help "width along y"} ];
+DefineConstant[ t = {1, Name "Parameters/t", Help "thickness along z"} ];
+DefineConstant[ nx = {8, Name "Parameters/nx", Help "elements along x"} ];
+DefineConstant[ ny = {8, Name "Parameters/ny", Help "elements along y"} ];
+DefineConstant[ nz = {2, Name "Parameters/nz", Help "elements through the thickness"} ];
+Point(1) = {0, 0, -t/2}; Point(2) = {a, 0, -t/2}; Point(3) = {a, b, -t/2}; Point(4) = {0, b, -t/2};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Transfinite Curve{1, 3} = nx + 1; Transfinite Curve{2, 4} = ny + 1;
+Transfinite Surface{1}; Recombine Surface{1};
+out[] = Extrude {0, 0, t} { Surface{1}; Layers{nz}; Recombine; };
+Physical Surface("bottom") = {1};
+Physical Surface("top") = {out[0]};
+Physical Surface("sides") = {out[2], out[3], out[4], out[5]};
+Physical Volume("plate") = {out[1]};

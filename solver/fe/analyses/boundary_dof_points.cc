@@ -1,0 +1,37 @@
+#include "analyses/boundary_dof_points.h"
+
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+
+namespace compliant
+{
+  using namespace dealii;
+
+  template <int dim>
+  std::map<types::global_dof_index, DofPoint<dim>>
+  boundary_dof_points(const LinearElasticProblem<dim> &problem, const int boundary_id)
+  {
+    std::map<types::global_dof_index, DofPoint<dim>> result;
+    const Quadrature<dim> support(problem.fe->get_unit_support_points());
+    FEValues<dim> fe_values(*problem.mapping, *problem.fe, support, update_quadrature_points);
+    std::vector<types::global_dof_index> dofs(problem.fe->n_dofs_per_cell());
+    // All cells, not only owned ones: the shared triangulation has them all on every rank.
+    for (const auto &cell : problem.dof_handler.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && (int)cell->face(f)->boundary_id() == boundary_id)
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (problem.fe->has_support_on_face(i, f))
+                result[dofs[i]] = {problem.fe->system_to_component_index(i).first,
+                                   fe_values.quadrature_point(i)};
+          }
+    return result;
+  }
+
+  template std::map<types::global_dof_index, DofPoint<2>>
+  boundary_dof_points<2>(const LinearElasticProblem<2> &, int);
+  template std::map<types::global_dof_index, DofPoint<3>>
+  boundary_dof_points<3>(const LinearElasticProblem<3> &, int);
+} // namespace compliant

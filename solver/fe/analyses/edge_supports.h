@@ -1,0 +1,19 @@
+// Supports on edges (3D) or corners (2D): the DoFs that lie on every one of several boundaries,
+// e.g. the edges of a plate's bottom face, 'bottom & sides'. NAFEMS FV52 is simply supported
+// this way, which no face condition can express.
+#pragma once
+
+#include <deal.II/lac/affine_constraints.h>
+
+#include "elasticity/linear_elastic_problem.h"
+
+#include <string>
+
+namespace compliant
+{
+  // spec: 'bottom & sides: z; a & b: x, y'. Holds the named components at zero. DoFs that are
+  // constrained already keep their constraint. Throws std::invalid_argument naming `where`.
+  template <int dim>
+  void add_edge_supports(const LinearElasticProblem<dim> &problem, const std::string &spec,
+                         const std::string &where, dealii::AffineConstraints<double> &constraints);
+} // namespace compliant

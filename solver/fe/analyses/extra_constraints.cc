@@ -1,0 +1,44 @@
+#include "analyses/extra_constraints.h"
+
+#include "analyses/edge_supports.h"
+#include "analyses/pin_joints.h"
+#include "input/spec_list.h"
+
+namespace compliant
+{
+  void declare_extra_constraints(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Extra constraints");
+    prm.declare_entry("Edge supports", "", dealii::Patterns::Anything(),
+                      "Components held at zero on the DoFs shared by several boundaries (edges in "
+                      "3D, corners in 2D): 'bottom & sides: z'. Read by the modal and linkage "
+                      "analyses only.");
+    prm.declare_entry("Pins", "", dealii::Patterns::Anything(),
+                      "Frictionless pin joints: 'B: pin_B, eye_AB_B, eye_BC_B; ...', the pin "
+                      "disk's boundary first, then the eyes (holes of the same radius, meshed with "
+                      "the same nodes on the circle). Radial displacements are tied, tangential "
+                      "sliding is free: force, no moment. Clamp a pin's boundary to pin it to the "
+                      "ground. Read by the modal and linkage analyses only.");
+    prm.leave_subsection();
+  }
+
+  ExtraConstraints read_extra_constraints(const dealii::ParameterHandler &prm)
+  {
+    return {trim(prm.get({"Extra constraints"}, "Edge supports")),
+            trim(prm.get({"Extra constraints"}, "Pins"))};
+  }
+
+  template <int dim>
+  void add_extra_constraints(const LinearElasticProblem<dim> &problem,
+                             const ExtraConstraints          &extra,
+                             dealii::AffineConstraints<double> &constraints)
+  {
+    add_edge_supports(problem, extra.edge_supports, "Extra constraints/Edge supports", constraints);
+    add_pin_joints(problem, extra.pins, "Extra constraints/Pins", constraints);
+  }
+
+  template void add_extra_constraints<2>(const LinearElasticProblem<2> &, const ExtraConstraints &,
+                                         dealii::AffineConstraints<double> &);
+  template void add_extra_constraints<3>(const LinearElasticProblem<3> &, const ExtraConstraints &,
+                                         dealii::AffineConstraints<double> &);
+} // namespace compliant

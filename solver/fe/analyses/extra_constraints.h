@@ -1,0 +1,32 @@
+// The "Extra constraints" case-file subsection: edge supports and pin joints, honoured by the
+// analyses that rebuild the constraints on every rank (modal, linkage). 'linear static' does not
+// read it.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include "elasticity/linear_elastic_problem.h"
+
+#include <string>
+
+namespace compliant
+{
+  struct ExtraConstraints
+  {
+    std::string edge_supports;
+    std::string pins;
+
+    bool empty() const { return edge_supports.empty() && pins.empty(); }
+  };
+
+  void             declare_extra_constraints(dealii::ParameterHandler &prm);
+  ExtraConstraints read_extra_constraints(const dealii::ParameterHandler &prm);
+
+  // Adds edge supports, then pins, to constraints gathered from every rank (not closed).
+  // Throws std::invalid_argument naming the entry.
+  template <int dim>
+  void add_extra_constraints(const LinearElasticProblem<dim> &problem,
+                             const ExtraConstraints          &extra,
+                             dealii::AffineConstraints<double> &constraints);
+} // namespace compliant

@@ -1,0 +1,143 @@
+#include "analyses/pin_joints.h"
+
+#include "analyses/boundary_dof_points.h"
+#include "input/spec_list.h"
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <cmath>
+
+namespace compliant
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // The DoFs of one node of a ring, by component.
+    template <int dim>
+    struct RingNode
+    {
+      Point<dim>                                 point;
+      std::array<types::global_dof_index, dim> dofs;
+    };
+
+    template <int dim>
+    std::vector<RingNode<dim>> ring_nodes(const LinearElasticProblem<dim> &problem,
+                                          const std::string &name, const std::string &where)
+    {
+      const auto dof_points =
+        boundary_dof_points(problem, boundary_id_of(name, problem.geometry.boundary_ids, where));
+      // DoFs of the same node share the support point exactly (same cell computation).
+      std::vector<RingNode<dim>>          nodes;
+      std::vector<std::vector<bool>>      seen;
+      for (const auto &[dof, location] : dof_points)
+        {
+          auto it = std::find_if(nodes.begin(), nodes.end(), [&](const RingNode<dim> &n) {
+            return n.point.distance(location.point) < 1e-12 * (1 + location.point.norm());
+          });
+          if (it == nodes.end())
+            {
+              nodes.push_back({location.point, {}});
+              it = std::prev(nodes.end());
+            }
+          it->dofs[location.component] = dof;
+        }
+      return nodes;
+    }
+  } // namespace
+
+  template <int dim>
+  void add_pin_joints(const LinearElasticProblem<dim> &problem, const std::string &spec,
+                      const std::string &where, AffineConstraints<double> &constraints)
+  {
+    std::set<types::global_dof_index> tied; // eye DoFs already made dependent
+    for (const auto &item : parse_spec_list(spec, where))
+      {
+        if (item.fields.size() < 2)
+          throw std::invalid_argument(where + ": pin '" + item.name +
+                                      "' needs the pin's boundary and at least one eye");
+        for (const auto &f : item.fields)
+          if (!f.key.empty())
+            throw std::invalid_argument(where + ": pin '" + item.name +
+                                        "' expects boundary names, got '" + f.key + "=...'");
+        const auto pin = ring_nodes(problem, item.fields[0].value, where);
+        Point<dim> center;
+        for (const auto &n : pin)
+          center += n.point / static_cast<double>(pin.size());
+        double radius = 0;
+        for (const auto &n : pin)
+          radius = std::max(radius, n.point.distance(center));
+        const double tolerance = 1e-6 * radius;
+
+        for (unsigned int e = 1; e < item.fields.size(); ++e)
+          {
+            const std::string eye_name = item.fields[e].value;
+            const auto        eye      = ring_nodes(problem, eye_name, where);
+            if (eye.size() != pin.size())
+              throw std::invalid_argument(
+                where + ": eye '" + eye_name + "' has " + std::to_string(eye.size()) +
+                " nodes on its circle, pin '" + item.fields[0].value + "' has " +
+                std::to_string(pin.size()) + "; mesh both circles with the same nodes");
+            bool spin_fixed = e != 1; // only the first eye takes the pin's spin
+            for (const auto &node : eye)
+              {
+                const auto match = std::find_if(pin.begin(), pin.end(), [&](const RingNode<dim> &n) {
+                  return n.point.distance(node.point) < tolerance;
+                });
+                if (match == pin.end())
+                  throw std::invalid_argument(where + ": node (" + std::to_string(node.point[0]) +
+                                              ", " + std::to_string(node.point[1]) + ") of eye '" +
+                                              eye_name + "' has no node of pin '" +
+                                              item.fields[0].value + "' at the same place");
+                for (const auto dof : node.dofs)
+                  if (constraints.is_constrained(dof) || tied.count(dof))
+                    throw std::invalid_argument(where + ": eye '" + eye_name +
+                                                "' is supported or in another pin; support the "
+                                                "pin's boundary instead");
+                // Radial direction in the plane of the linkage (x, y).
+                Tensor<1, dim> normal;
+                for (unsigned int d = 0; d < 2; ++d)
+                  normal[d] = node.point[d] - center[d];
+                normal /= normal.norm();
+                const bool full_tie =
+                  !spin_fixed && !constraints.is_constrained(match->dofs[0]) &&
+                  !constraints.is_constrained(match->dofs[1]);
+                if (full_tie)
+                  {
+                    for (unsigned int d = 0; d < dim; ++d)
+                      {
+                        constraints.add_line(node.dofs[d]);
+                        constraints.add_entry(node.dofs[d], match->dofs[d], 1.0);
+                      }
+                    spin_fixed = true;
+                  }
+                else
+                  {
+                    // u_eye . n = u_pin . n, solved for the eye's component with the larger |n_k|.
+                    const unsigned int k = std::abs(normal[0]) >= std::abs(normal[1]) ? 0 : 1;
+                    constraints.add_line(node.dofs[k]);
+                    for (unsigned int d = 0; d < 2; ++d)
+                      {
+                        constraints.add_entry(node.dofs[k], match->dofs[d], normal[d] / normal[k]);
+                        if (d != k)
+                          constraints.add_entry(node.dofs[k], node.dofs[d], -normal[d] / normal[k]);
+                      }
+                    if (dim == 3) // the pin also holds the eye along its axis
+                      {
+                        constraints.add_line(node.dofs[dim - 1]);
+                        constraints.add_entry(node.dofs[dim - 1], match->dofs[dim - 1], 1.0);
+                      }
+                  }
+                for (const auto dof : node.dofs)
+                  tied.insert(dof);
+              }
+          }
+      }
+  }
+
+  template void add_pin_joints<2>(const LinearElasticProblem<2> &, const std::string &,
+                                  const std::string &, AffineConstraints<double> &);
+  template void add_pin_joints<3>(const LinearElasticProblem<3> &, const std::string &,
+                                  const std::string &, AffineConstraints<double> &);
+} // namespace compliant
