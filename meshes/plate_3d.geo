@@ -1,6 +1,6 @@
 // Rectangular plate, 3D, structured hexahedra: x in [0, a], y in [0, b], z in [-t/2, t/2].
-// Boundaries: bottom (z = -t/2), top (z = t/2), sides (the four lateral faces). Body: plate.
-// Edges are where two boundaries meet, e.g. 'bottom & sides' for the edges of the bottom face.
+// Boundaries: bottom (z = -t/2), top (z = t/2), x_ends (x = 0, a), y_ends (y = 0, b). Body: plate.
+// Edges are where two boundaries meet, e.g. 'bottom & x_ends' for two edges of the bottom face.
 DefineConstant[ a = {10, Name "Parameters/a", Help "length along x"} ];
 DefineConstant[ b = {10, Name "Parameters/b", Help "width along y"} ];
 DefineConstant[ t = {1, Name "Parameters/t", Help "thickness along z"} ];
@@ -15,5 +15,7 @@ Transfinite Surface{1}; Recombine Surface{1};
 out[] = Extrude {0, 0, t} { Surface{1}; Layers{nz}; Recombine; };
 Physical Surface("bottom") = {1};
 Physical Surface("top") = {out[0]};
-Physical Surface("sides") = {out[2], out[3], out[4], out[5]};
+// Extrude numbers the lateral faces after the curves 1-4: y = 0, x = a, y = b, x = 0.
+Physical Surface("y_ends") = {out[2], out[4]};
+Physical Surface("x_ends") = {out[3], out[5]};
 Physical Volume("plate") = {out[1]};

@@ -3,6 +3,8 @@
 #include <deal.II/base/utilities.h>
 
 #include "analyses/linear_static.h"
+#include "analyses/nonlinear_static.h"
+#include "analyses/linkage.h"
 #include "analyses/modal.h"
 
 #include <filesystem>
@@ -12,7 +14,9 @@ namespace compliant
 {
   const std::vector<Analysis> &analyses()
   {
-    static const std::vector<Analysis> list = {linear_static_analysis(), modal_analysis()};
+    static const std::vector<Analysis> list = {linear_static_analysis(),
+                                               nonlinear_static_analysis(), modal_analysis(),
+                                               linkage_analysis()};
     return list;
   }
 
@@ -32,8 +36,12 @@ namespace compliant
     const bool  root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
     try
       {
-        add_derived_quantities(p.derived, summary.quantities, variables);
-        summary.comparisons = run_checks(parse_checks(p.checks), summary.quantities, variables);
+        // A nonlinear run that converged no step has no quantities to compare.
+        if (summary.quantities.count("n_dofs") > 0)
+          {
+            add_derived_quantities(p.derived, summary.quantities, variables);
+            summary.comparisons = run_checks(parse_checks(p.checks), summary.quantities, variables);
+          }
       }
     catch (const std::invalid_argument &e)
       {

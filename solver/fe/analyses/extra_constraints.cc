@@ -17,8 +17,10 @@ namespace compliant
                       "Frictionless pin joints: 'B: pin_B, eye_AB_B, eye_BC_B; ...', the pin "
                       "disk's boundary first, then the eyes (holes of the same radius, meshed with "
                       "the same nodes on the circle). Radial displacements are tied, tangential "
-                      "sliding is free: force, no moment. Clamp a pin's boundary to pin it to the "
-                      "ground. Read by the modal and linkage analyses only.");
+                      "sliding is free: force, no moment (in 3D each node of an eye is held radially, "
+                      "one also axially: a revolute joint). Clamp a pin's boundary to pin it to the "
+                      "ground. 'joint=bonded' in an item welds that joint instead. Read by the "
+                      "modal and linkage analyses only.");
     prm.leave_subsection();
   }
 

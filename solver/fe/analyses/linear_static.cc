@@ -60,6 +60,7 @@ namespace compliant
                           {"solver", p.solver_method}};
       summary.parameters = p.geometry_parameters;
       summary.quantities = compute_quantities(problem);
+      summary.quantities["solver_iterations"] = problem.statistics.iterations;
       summary.quantities["time_setup"]    = problem.statistics.setup_seconds;
       summary.quantities["time_assembly"] = problem.statistics.assembly_seconds;
       summary.quantities["time_solve"]    = problem.statistics.solve_seconds;

@@ -16,6 +16,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include "elasticity/rigid_rotation.h"
+#include "mesh/mesh_reader.h"
 #include "linear_algebra/petsc_linear_solver.h"
 
 #include <sstream>
@@ -45,13 +46,7 @@ namespace compliant
       throw std::invalid_argument("Model = " + parameters.model + " needs a " +
                                   std::to_string(dim) + "D mesh, but '" + parameters.mesh_file +
                                   "' is " + std::to_string(geometry.dimension) + "D");
-    {
-      GridIn<dim> grid_in;
-      grid_in.attach_triangulation(triangulation);
-      std::istringstream in(geometry.msh_text);
-      grid_in.read_msh(in);
-    }
-    triangulation.refine_global(parameters.global_refinements);
+    create_triangulation(triangulation, geometry, parameters.global_refinements);
 
     const unsigned int degree = parameters.element_degree;
     if (triangulation.all_reference_cells_are_hyper_cube())
@@ -336,6 +331,57 @@ namespace compliant
     constraints.distribute(x);
     solution = x;
     statistics.solve_seconds = timer.wall_time();
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim> LinearElasticProblem<dim>::cauchy_stress(const Tensor<2, dim> &grad_u,
+                                                                   const Material &material, double,
+                                                                   double &sigma_zz) const
+  {
+    return stress(symmetrize(grad_u), material, sigma_zz);
+  }
+
+  template <int dim>
+  double LinearElasticProblem<dim>::energy_density(const Tensor<2, dim> &grad_u,
+                                                   const Material       &material) const
+  {
+    double     sigma_zz;
+    const auto strain = symmetrize(grad_u);
+    return 0.5 * (stress(strain, material, sigma_zz) * strain);
+  }
+
+  template <int dim>
+  PETScWrappers::MPI::Vector LinearElasticProblem<dim>::reaction_forces() const
+  {
+    // The system matrix has the Dirichlet rows condensed away, so f_int is assembled afresh.
+    PETScWrappers::MPI::Vector residual(locally_owned_dofs, communicator);
+    FEValues<dim> fe_values(*mapping, *fe, *quadrature, update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     u(0);
+    const unsigned int                   n = fe->n_dofs_per_cell();
+    Vector<double>                       cell_vector(n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[u].get_function_symmetric_gradients(solution, strain);
+          const Material &material = materials.at(cell->material_id());
+          cell_vector              = 0;
+          for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+            {
+              double     sigma_zz;
+              const auto sigma = stress(strain[q], material, sigma_zz);
+              for (unsigned int i = 0; i < n; ++i)
+                cell_vector(i) +=
+                  (sigma * fe_values[u].symmetric_gradient(i, q)) * fe_values.JxW(q) * thickness;
+            }
+          cell->get_dof_indices(dofs);
+          residual.add(dofs, cell_vector);
+        }
+    residual.compress(VectorOperation::add);
+    residual -= external_forces;
+    return residual;
   }
 
   template <int dim>

@@ -31,6 +31,8 @@ namespace compliant
   class LinearElasticProblem
   {
   public:
+    static constexpr int dimension = dim;
+
     LinearElasticProblem(const CaseParameters &parameters, const MeshedGeometry &geometry,
                          MPI_Comm communicator);
 
@@ -45,6 +47,14 @@ namespace compliant
     dealii::SymmetricTensor<2, dim> stress(const dealii::SymmetricTensor<2, dim> &strain,
                                            const Material &material, double &sigma_zz) const;
     double von_mises(const dealii::SymmetricTensor<2, dim> &stress, double sigma_zz) const;
+    // The same from a displacement gradient (the interface the quantities and fields use; the
+    // pressure argument exists for mixed formulations and is ignored here).
+    dealii::SymmetricTensor<2, dim> cauchy_stress(const dealii::Tensor<2, dim> &grad_u,
+                                                  const Material &material, double pressure,
+                                                  double &sigma_zz) const;
+    double energy_density(const dealii::Tensor<2, dim> &grad_u, const Material &material) const;
+    // f_int(u) - f_ext without constraints: nonzero only where supports act, the reactions.
+    dealii::PETScWrappers::MPI::Vector reaction_forces() const;
 
     // Everything the quantities and the output read.
     const CaseParameters                       &parameters;

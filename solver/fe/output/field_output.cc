@@ -3,7 +3,11 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include "elasticity/linear_elastic_problem.h"
+#include "finite_strain/finite_strain_problem.h"
+
 #include <cstdio>
+#include <type_traits>
 
 namespace compliant
 {
@@ -11,11 +15,11 @@ namespace compliant
 
   namespace
   {
-    template <int dim>
+    template <class Problem, int dim = Problem::dimension>
     class StressPostprocessor : public DataPostprocessor<dim>
     {
     public:
-      explicit StressPostprocessor(const LinearElasticProblem<dim> &problem) : problem(problem) {}
+      explicit StressPostprocessor(const Problem &problem) : problem(problem) {}
 
       void evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
                                  std::vector<Vector<double>> &computed) const override
@@ -27,9 +31,15 @@ namespace compliant
             Tensor<2, dim> grad;
             for (unsigned int d = 0; d < dim; ++d)
               grad[d] = inputs.solution_gradients[k][d];
-            const SymmetricTensor<2, dim> strain = symmetrize(grad);
-            double                        sigma_zz;
-            const auto                    sigma = problem.stress(strain, material, sigma_zz);
+            // Green-Lagrange strain (the small strain in a linear analysis: the quadratic term
+            // is negligible there); Cauchy stress.
+            const SymmetricTensor<2, dim> strain =
+              symmetrize(grad) + (nonlinear ? 0.5 * symmetrize(transpose(grad) * grad) :
+                                              SymmetricTensor<2, dim>());
+            const double pressure = inputs.solution_values[k].size() > dim ?
+                                      inputs.solution_values[k][dim] : 0.0;
+            double       sigma_zz;
+            const auto   sigma = problem.cauchy_stress(grad, material, pressure, sigma_zz);
             unsigned int                  c     = 0;
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
@@ -58,23 +68,33 @@ namespace compliant
         return i;
       }
 
-      UpdateFlags get_needed_update_flags() const override { return update_gradients; }
+      UpdateFlags get_needed_update_flags() const override
+      {
+        return update_values | update_gradients;
+      }
 
     private:
-      const LinearElasticProblem<dim> &problem;
+      const Problem &problem;
+      const bool     nonlinear = !std::is_same_v<Problem, LinearElasticProblem<dim>>;
     };
   } // namespace
 
-  template <int dim>
-  std::string write_fields(const LinearElasticProblem<dim> &problem, const std::string &directory)
+  template <class Problem>
+  std::string write_fields(const Problem &problem, const std::string &directory)
   {
+    constexpr int  dim = Problem::dimension;
     DataOut<dim> data_out;
     data_out.attach_dof_handler(problem.dof_handler);
-    const std::vector<std::string> names(dim, "displacement");
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+    std::vector<std::string> names(dim, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
       dim, DataComponentInterpretation::component_is_part_of_vector);
+    if (problem.fe->n_components() > dim)
+      {
+        names.emplace_back("pressure");
+        interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+      }
     data_out.add_data_vector(problem.solution, names, DataOut<dim>::type_dof_data, interpretation);
-    StressPostprocessor<dim> stress(problem);
+    StressPostprocessor<Problem> stress(problem);
     data_out.add_data_vector(problem.solution, stress);
 
     Vector<float> material_id(problem.triangulation.n_active_cells());
@@ -110,6 +130,8 @@ namespace compliant
     return xdmf;
   }
 
-  template std::string write_fields<2>(const LinearElasticProblem<2> &, const std::string &);
-  template std::string write_fields<3>(const LinearElasticProblem<3> &, const std::string &);
+  template std::string write_fields(const LinearElasticProblem<2> &, const std::string &);
+  template std::string write_fields(const LinearElasticProblem<3> &, const std::string &);
+  template std::string write_fields(const FiniteStrainProblem<2> &, const std::string &);
+  template std::string write_fields(const FiniteStrainProblem<3> &, const std::string &);
 } // namespace compliant

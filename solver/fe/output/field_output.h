@@ -2,13 +2,13 @@
 // partition id. Files appear under their final names only when complete.
 #pragma once
 
-#include "elasticity/linear_elastic_problem.h"
 
 #include <string>
 
 namespace compliant
 {
   // Returns the path of the .xdmf file.
-  template <int dim>
-  std::string write_fields(const LinearElasticProblem<dim> &problem, const std::string &directory);
+  // Problem: LinearElasticProblem<dim> or FiniteStrainProblem<dim>.
+  template <class Problem>
+  std::string write_fields(const Problem &problem, const std::string &directory);
 } // namespace compliant

@@ -6,6 +6,8 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include "finite_strain/finite_strain_problem.h"
+#include "elasticity/linear_elastic_problem.h"
 #include "input/expression.h"
 #include "input/spec_list.h"
 
@@ -69,8 +71,8 @@ namespace compliant
     }
 
     // Value of the solution at a point, found by whichever rank owns the cell around it.
-    template <int dim>
-    Tensor<1, dim> point_displacement(const LinearElasticProblem<dim> &problem, const Point<dim> &p,
+    template <class Problem, int dim = Problem::dimension>
+    Tensor<1, dim> point_displacement(const Problem &problem, const Point<dim> &p,
                                       bool &found)
     {
       Tensor<1, dim> value;
@@ -102,12 +104,19 @@ namespace compliant
     }
 
     // Location and component of each locally owned DoF.
+    // Support points of the displacement base element (a mixed element's pressure has none).
     template <int dim>
+    Quadrature<dim> displacement_support_points(const FiniteElement<dim> &fe)
+    {
+      return Quadrature<dim>(fe.base_element(0).get_unit_support_points());
+    }
+
+    template <class Problem, int dim = Problem::dimension>
     std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>>
-    owned_dof_locations(const LinearElasticProblem<dim> &problem)
+    owned_dof_locations(const Problem &problem)
     {
       std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>> locations;
-      const Quadrature<dim> support(problem.fe->get_unit_support_points());
+      const Quadrature<dim> support = displacement_support_points(*problem.fe);
       FEValues<dim> fe_values(*problem.mapping, *problem.fe, support, update_quadrature_points);
       std::vector<types::global_dof_index> dofs(problem.fe->n_dofs_per_cell());
       for (const auto &cell : problem.dof_handler.active_cell_iterators())
@@ -116,54 +125,22 @@ namespace compliant
             fe_values.reinit(cell);
             cell->get_dof_indices(dofs);
             for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (problem.locally_owned_dofs.is_element(dofs[i]))
+              if (problem.locally_owned_dofs.is_element(dofs[i]) &&
+                  problem.fe->system_to_component_index(i).first < dim)
                 locations[dofs[i]] = {problem.fe->system_to_component_index(i).first,
-                                      fe_values.quadrature_point(i)};
+                                      fe_values.quadrature_point(
+                                        problem.fe->system_to_base_index(i).second)};
           }
       return locations;
     }
 
-    // r = f_int(u) - f_ext: nonzero only where supports act, it is the support reaction.
-    template <int dim>
-    PETScWrappers::MPI::Vector reaction_vector(const LinearElasticProblem<dim> &problem)
-    {
-      // The system matrix has the Dirichlet rows condensed away, so f_int is assembled afresh.
-      PETScWrappers::MPI::Vector residual(problem.locally_owned_dofs, problem.communicator);
-      FEValues<dim> fe_values(*problem.mapping, *problem.fe, *problem.quadrature,
-                              update_gradients | update_JxW_values);
-      const FEValuesExtractors::Vector u(0);
-      const unsigned int               n = problem.fe->n_dofs_per_cell();
-      Vector<double>                   cell_vector(n);
-      std::vector<types::global_dof_index> dofs(n);
-      std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
-      for (const auto &cell : problem.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fe_values.reinit(cell);
-            fe_values[u].get_function_symmetric_gradients(problem.solution, strain);
-            const Material &material = problem.materials.at(cell->material_id());
-            cell_vector              = 0;
-            for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-              {
-                double     sigma_zz;
-                const auto sigma = problem.stress(strain[q], material, sigma_zz);
-                for (unsigned int i = 0; i < n; ++i)
-                  cell_vector(i) += (sigma * fe_values[u].symmetric_gradient(i, q)) *
-                                    fe_values.JxW(q) * problem.thickness;
-              }
-            cell->get_dof_indices(dofs);
-            residual.add(dofs, cell_vector);
-          }
-      residual.compress(VectorOperation::add);
-      residual -= problem.external_forces;
-      return residual;
-    }
   } // namespace
 
-  template <int dim>
-  void validate_quantity_requests(const LinearElasticProblem<dim> &problem)
+  template <class Problem>
+  void validate_quantity_requests(const Problem &problem)
   {
     const auto &p = problem.parameters;
+    constexpr int dim = Problem::dimension;
     for (const auto &[name, point] : requested_points<dim>(p))
       {
         bool found = false;
@@ -180,9 +157,10 @@ namespace compliant
       boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Rotations");
   }
 
-  template <int dim>
-  Quantities compute_quantities(const LinearElasticProblem<dim> &problem)
+  template <class Problem>
+  Quantities compute_quantities(const Problem &problem)
   {
+    constexpr int dim = Problem::dimension;
     Quantities  q;
     const auto &p    = problem.parameters;
     const auto &bc   = problem.boundary_conditions;
@@ -191,7 +169,6 @@ namespace compliant
     q["n_dofs"]            = problem.dof_handler.n_dofs();
     q["n_cells"]           = problem.triangulation.n_active_cells();
     q["n_ranks"]           = Utilities::MPI::n_mpi_processes(comm);
-    q["solver_iterations"] = problem.statistics.iterations;
 
     for (const auto &[name, point] : requested_points<dim>(p))
       {
@@ -201,9 +178,12 @@ namespace compliant
           q["displacement_" + name + "_" + axis_name[d]] = u[d];
       }
 
+    const ComponentMask displacement_mask =
+      problem.fe->component_mask(FEValuesExtractors::Vector(0));
+
     // Reactions on every supported boundary; the moment point is the rotation center for
     // driven rotations, else the one given in Quantities/Reactions, else the origin.
-    const auto residual  = reaction_vector(problem);
+    const auto residual  = problem.reaction_forces();
     const auto locations = owned_dof_locations(problem);
     auto       moment_points = reaction_points<dim>(p);
     std::vector<std::pair<std::string, int>> supported = bc.clamped;
@@ -223,7 +203,7 @@ namespace compliant
     for (const auto &[name, id] : supported)
       {
         const IndexSet boundary_dofs =
-          DoFTools::extract_boundary_dofs(problem.dof_handler, ComponentMask(),
+          DoFTools::extract_boundary_dofs(problem.dof_handler, displacement_mask,
                                           {static_cast<types::boundary_id>(id)});
         Tensor<1, 3> force, moment;
         const Point<3> x0 = moment_points.count(name) ? moment_points[name] : Point<3>();
@@ -289,7 +269,7 @@ namespace compliant
       {
         const int      id = problem.geometry.boundary_ids.at(name);
         const IndexSet boundary_dofs =
-          DoFTools::extract_boundary_dofs(problem.dof_handler, ComponentMask(),
+          DoFTools::extract_boundary_dofs(problem.dof_handler, displacement_mask,
                                           {static_cast<types::boundary_id>(id)});
         // Unknowns: t (3) and w (3); in 2D only t_x, t_y, w_z matter.
         FullMatrix<double> normal(6, 6);
@@ -338,14 +318,18 @@ namespace compliant
     // Peak von Mises over quadrature points and element nodes; strain energy.
     {
       std::vector<Point<dim>> points = problem.quadrature->get_points();
-      for (const auto &x : problem.fe->get_unit_support_points())
+      for (const auto &x : displacement_support_points(*problem.fe).get_points())
         points.push_back(x);
       const Quadrature<dim> sample(points);
+      const bool            has_pressure = problem.fe->n_components() > dim;
+      const FEValuesExtractors::Vector u(0);
+      const FEValuesExtractors::Scalar pressure(has_pressure ? dim : 0);
       FEValues<dim> sample_values(*problem.mapping, *problem.fe, sample,
-                                  update_gradients | update_quadrature_points);
+                                  update_values | update_gradients | update_quadrature_points);
       FEValues<dim> fe_values(*problem.mapping, *problem.fe, *problem.quadrature,
                               update_gradients | update_JxW_values);
-      std::vector<SymmetricTensor<2, dim>> strain(sample.size()), strain_q(problem.quadrature->size());
+      std::vector<Tensor<2, dim>> grad(sample.size()), grad_q(problem.quadrature->size());
+      std::vector<double>         p_values(sample.size(), 0.0);
       double     max_vm = -1, energy = 0, safety = std::numeric_limits<double>::max();
       Point<dim> max_location;
       for (const auto &cell : problem.dof_handler.active_cell_iterators())
@@ -353,25 +337,24 @@ namespace compliant
           {
             const Material &material = problem.materials.at(cell->material_id());
             sample_values.reinit(cell);
-            sample_values[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(problem.solution, strain);
+            sample_values[u].get_function_gradients(problem.solution, grad);
+            if (has_pressure)
+              sample_values[pressure].get_function_values(problem.solution, p_values);
             for (unsigned int k = 0; k < sample.size(); ++k)
               {
-                double     sigma_zz;
-                const auto sigma = problem.stress(strain[k], material, sigma_zz);
-                const double vm  = problem.von_mises(sigma, sigma_zz);
+                double       sigma_zz;
+                const auto   sigma = problem.cauchy_stress(grad[k], material, p_values[k], sigma_zz);
+                const double vm    = problem.von_mises(sigma, sigma_zz);
                 if (vm > max_vm)
                   max_vm = vm, max_location = sample_values.quadrature_point(k);
                 if (material.yield_strength > 0 && vm > 0)
                   safety = std::min(safety, material.yield_strength / vm);
               }
             fe_values.reinit(cell);
-            fe_values[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(problem.solution, strain_q);
-            for (unsigned int k = 0; k < strain_q.size(); ++k)
-              {
-                double sigma_zz;
-                energy += 0.5 * (problem.stress(strain_q[k], material, sigma_zz) * strain_q[k]) *
-                          fe_values.JxW(k) * problem.thickness;
-              }
+            fe_values[u].get_function_gradients(problem.solution, grad_q);
+            for (unsigned int k = 0; k < grad_q.size(); ++k)
+              energy += problem.energy_density(grad_q[k], material) * fe_values.JxW(k) *
+                        problem.thickness;
           }
       const auto global_max = Utilities::MPI::min_max_avg(max_vm, comm);
       Tensor<1, dim> location = Utilities::MPI::this_mpi_process(comm) == global_max.max_index ?
@@ -386,8 +369,12 @@ namespace compliant
     return q;
   }
 
-  template void validate_quantity_requests<2>(const LinearElasticProblem<2> &);
-  template void validate_quantity_requests<3>(const LinearElasticProblem<3> &);
-  template Quantities compute_quantities<2>(const LinearElasticProblem<2> &);
-  template Quantities compute_quantities<3>(const LinearElasticProblem<3> &);
+  template void validate_quantity_requests(const LinearElasticProblem<2> &);
+  template void validate_quantity_requests(const LinearElasticProblem<3> &);
+  template Quantities compute_quantities(const LinearElasticProblem<2> &);
+  template Quantities compute_quantities(const LinearElasticProblem<3> &);
+  template void validate_quantity_requests(const FiniteStrainProblem<2> &);
+  template void validate_quantity_requests(const FiniteStrainProblem<3> &);
+  template Quantities compute_quantities(const FiniteStrainProblem<2> &);
+  template Quantities compute_quantities(const FiniteStrainProblem<3> &);
 } // namespace compliant

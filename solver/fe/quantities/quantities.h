@@ -3,7 +3,6 @@
 // displacements, best-fit boundary rotations, peak von Mises stress, strain energy.
 #pragma once
 
-#include "elasticity/linear_elastic_problem.h"
 
 #include <map>
 #include <string>
@@ -14,9 +13,10 @@ namespace compliant
 
   // Checks the Quantities entries (names, points inside the mesh) before the solve, so a bad
   // request costs no solve and leaves no output. Throws std::invalid_argument.
-  template <int dim>
-  void validate_quantity_requests(const LinearElasticProblem<dim> &problem);
+  // Problem: LinearElasticProblem<dim> or FiniteStrainProblem<dim>.
+  template <class Problem>
+  void validate_quantity_requests(const Problem &problem);
 
-  template <int dim>
-  Quantities compute_quantities(const LinearElasticProblem<dim> &problem);
+  template <class Problem>
+  Quantities compute_quantities(const Problem &problem);
 } // namespace compliant

@@ -1,0 +1,92 @@
+#include "analyses/linkage.h"
+
+#include <deal.II/base/timer.h>
+
+#include "analyses/extra_constraints.h"
+#include "analyses/global_constraints.h"
+#include "elasticity/linear_elastic_problem.h"
+#include "output/field_output.h"
+#include "quantities/quantities.h"
+
+#include <iostream>
+
+namespace compliant
+{
+  namespace
+  {
+    template <int dim>
+    int run(const RunContext &context)
+    {
+      const auto   &p    = context.parameters;
+      MPI_Comm      comm = context.communicator;
+      const bool    root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      dealii::Timer timer;
+      LinearElasticProblem<dim>         problem(p, context.geometry, comm);
+      dealii::AffineConstraints<double> constraints;
+      try
+        {
+          parse_checks(p.checks);
+          problem.setup();
+          validate_quantity_requests(problem);
+          constraints = gather_constraints(problem, false);
+          add_extra_constraints(problem, read_extra_constraints(context.prm), constraints);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw InputError("case file '" + p.case_file + "': " + e.what());
+        }
+      if (root)
+        std::cout << "Mesh: " << problem.triangulation.n_active_cells() << " cells, "
+                  << problem.dof_handler.n_dofs() << " DoFs (degree " << p.element_degree << ", "
+                  << p.model << ") on " << dealii::Utilities::MPI::n_mpi_processes(comm)
+                  << " ranks" << std::endl;
+      if (context.check_only)
+        {
+          if (root)
+            std::cout << "Case '" << p.case_file << "' is valid." << std::endl;
+          return 0;
+        }
+
+      install_constraints(problem, std::move(constraints));
+      problem.assemble();
+      problem.solve();
+      if (root)
+        std::cout << "Solved: " << problem.statistics.iterations << " iterations ("
+                  << p.solver_method << "), assembly " << problem.statistics.assembly_seconds
+                  << " s, solve " << problem.statistics.solve_seconds << " s" << std::endl;
+
+      RunSummary summary;
+      summary.case_file  = p.case_file;
+      summary.settings   = {{"analysis", p.analysis},
+                          {"model", p.model},
+                          {"mesh_file", p.mesh_file},
+                          {"element_degree", std::to_string(p.element_degree)},
+                          {"cell_type", problem.triangulation.all_reference_cells_are_hyper_cube() ?
+                                          "hypercube" : "simplex"},
+                          {"solver", p.solver_method},
+                          {"joints", "frictionless pins (radial ties)"}};
+      summary.parameters = p.geometry_parameters;
+      summary.quantities = compute_quantities(problem);
+      summary.quantities["time_setup"]    = problem.statistics.setup_seconds;
+      summary.quantities["time_assembly"] = problem.statistics.assembly_seconds;
+      summary.quantities["time_solve"]    = problem.statistics.solve_seconds;
+      summary.quantities["time_total"]    = timer.wall_time();
+
+      auto variables   = problem.expression_variables();
+      variables["rho"] = problem.materials.begin()->second.density; // as in 'modal'
+      finish_run(context, summary, variables,
+                 [&](const std::string &directory) { write_fields(problem, directory); });
+      return 0;
+    }
+  } // namespace
+
+  Analysis linkage_analysis()
+  {
+    return {"linkage",
+            "linear static analysis of links joined by frictionless pins (Extra constraints)",
+            [](dealii::ParameterHandler &) {}, // Extra constraints are declared by 'modal'
+            [](const RunContext &context) {
+              return context.parameters.dimension == 2 ? run<2>(context) : run<3>(context);
+            }};
+  }
+} // namespace compliant

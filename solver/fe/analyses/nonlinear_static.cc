@@ -1,0 +1,215 @@
+#include "analyses/nonlinear_static.h"
+
+#include <deal.II/base/timer.h>
+
+#include "finite_strain/finite_strain_problem.h"
+#include "output/field_output.h"
+#include "quantities/quantities.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+namespace compliant
+{
+  namespace
+  {
+    struct SteppingSettings
+    {
+      double initial_step = 0.1, minimum_step = 1e-4, maximum_step = 0.25;
+    };
+
+    void declare(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii;
+      prm.enter_subsection("Finite strain");
+      prm.declare_entry("Law", "neo-Hookean",
+                        Patterns::Selection("neo-Hookean|Mooney-Rivlin|Saint Venant-Kirchhoff"),
+                        "Hyperelastic law (compressible; small-strain limit has the material's E "
+                        "and nu). Mooney-Rivlin: W = c1 (I1-3) + c2 (I2-3) - 2(c1+2c2) ln J + "
+                        "lambda/2 (ln J)^2.");
+      prm.declare_entry("Mooney-Rivlin ratio", "0.2", Patterns::Double(0, 0.99),
+                        "c2 / (c1 + c2) of the Mooney-Rivlin law (0 is neo-Hookean).");
+      prm.declare_entry("Formulation", "displacement", Patterns::Selection("displacement|mixed"),
+                        "displacement: Q_p elements; mixed: Q_p displacement with discontinuous "
+                        "P_(p-1) pressure, free of volumetric locking for nu -> 0.5.");
+      prm.declare_entry("Follower pressure", "", Patterns::Anything(),
+                        "Pressure acting on the deformed surface (follows its rotation): "
+                        "'boundary: p' with p an expression of the reference coordinates x, y, z "
+                        "and geometry parameters; positive pushes inward. Scaled by the load factor.");
+      prm.declare_entry("Initial step", "0.1", Patterns::Double(1e-12, 1),
+                        "First load-factor increment (the load factor runs from 0 to 1 and "
+                        "scales loads, prescribed displacements and rotation angles).");
+      prm.declare_entry("Minimum step", "1e-4", Patterns::Double(0, 1),
+                        "Smallest increment before the run gives up.");
+      prm.declare_entry("Maximum step", "0.25", Patterns::Double(1e-12, 1),
+                        "Largest increment; steps grow by 1.5 after easy convergence.");
+      prm.declare_entry("Newton iterations", "25", Patterns::Integer(1),
+                        "Newton iterations per step before the step is cut back.");
+      prm.declare_entry("Residual tolerance", "1e-9", Patterns::Double(0, 1),
+                        "Newton converges when the residual is below this fraction of the "
+                        "internal force norm.");
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    int run(const RunContext &context)
+    {
+      const auto &p    = context.parameters;
+      MPI_Comm    comm = context.communicator;
+      const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      auto       &prm  = const_cast<dealii::ParameterHandler &>(context.prm);
+
+      FiniteStrainSettings settings;
+      SteppingSettings     stepping;
+      prm.enter_subsection("Finite strain");
+      settings.law                   = prm.get("Law");
+      settings.mooney_rivlin_ratio   = prm.get_double("Mooney-Rivlin ratio");
+      settings.mixed                 = prm.get("Formulation") == "mixed";
+      settings.follower_pressure     = prm.get("Follower pressure");
+      settings.max_newton_iterations = prm.get_integer("Newton iterations");
+      settings.residual_tolerance    = prm.get_double("Residual tolerance");
+      stepping.initial_step          = prm.get_double("Initial step");
+      stepping.minimum_step          = prm.get_double("Minimum step");
+      stepping.maximum_step          = prm.get_double("Maximum step");
+      prm.leave_subsection();
+
+      dealii::Timer            timer;
+      FiniteStrainProblem<dim> problem(p, settings, context.geometry, comm);
+      try
+        {
+          parse_checks(p.checks);
+          problem.setup();
+          validate_quantity_requests(problem);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw InputError("case file '" + p.case_file + "': " + e.what());
+        }
+      if (root)
+        std::cout << "Mesh: " << problem.triangulation.n_active_cells() << " cells, "
+                  << problem.dof_handler.n_dofs() << " DoFs (degree " << p.element_degree << ", "
+                  << p.model << ", " << settings.law << ", "
+                  << (settings.mixed ? "mixed u-p" : "displacement") << ") on "
+                  << dealii::Utilities::MPI::n_mpi_processes(comm) << " ranks" << std::endl;
+      if (context.check_only)
+        {
+          if (root)
+            std::cout << "Case '" << p.case_file << "' is valid." << std::endl;
+          return 0;
+        }
+
+      // The response curve is written step by step: a run that stops keeps its converged steps.
+      if (root)
+        std::filesystem::create_directories(p.output_directory);
+      const std::string curve_file = p.output_directory + "/curve.csv";
+      std::ofstream     curve;
+      std::vector<std::string> columns;
+
+      double       step = stepping.initial_step, total_newton = 0;
+      unsigned int n_steps = 0, n_cutbacks = 0;
+      std::string  failure;
+      Quantities   quantities;
+      while (problem.load_factor < 1 - 1e-12)
+        {
+          const double target = std::min(1.0, problem.load_factor + step);
+          try
+            {
+              const auto report = problem.solve_to(target);
+              ++n_steps;
+              total_newton += report.iterations;
+              quantities = compute_quantities(problem);
+              if (root)
+                {
+                  std::cout << "step " << std::setw(3) << n_steps << "  load factor "
+                            << std::setw(10) << std::setprecision(6) << target << "  Newton "
+                            << std::setw(2) << report.iterations << "  residual "
+                            << std::scientific << std::setprecision(2) << report.residual
+                            << std::defaultfloat;
+                  if (report.line_search_cuts)
+                    std::cout << "  line search cuts " << report.line_search_cuts;
+                  std::cout << std::endl;
+                  if (columns.empty())
+                    {
+                      curve.open(curve_file);
+                      curve << "step,load_factor,newton_iterations";
+                      for (const auto &[k, v] : quantities)
+                        if (k.rfind("time_", 0) != 0)
+                          {
+                            columns.push_back(k);
+                            curve << "," << k;
+                          }
+                      curve << "\n";
+                    }
+                  curve << n_steps << "," << std::setprecision(12) << target << ","
+                        << report.iterations;
+                  for (const auto &k : columns)
+                    curve << "," << quantities[k];
+                  curve << std::endl;
+                }
+              if (report.iterations <= 6)
+                step = std::min(stepping.maximum_step, 1.5 * step);
+            }
+          catch (const StepFailure &e)
+            {
+              ++n_cutbacks;
+              if (root)
+                std::cout << "step to load factor " << target << " failed: " << e.what()
+                          << "; cutting the step to " << step / 2 << std::endl;
+              step /= 2;
+              if (step < stepping.minimum_step)
+                {
+                  std::ostringstream message;
+                  message << "stopped at load factor " << problem.load_factor
+                          << " (last converged step): the step to " << target << " failed ("
+                          << e.what() << ") and the increment fell below Finite strain/Minimum "
+                          << "step = " << stepping.minimum_step;
+                  failure = message.str();
+                  break;
+                }
+            }
+        }
+
+      RunSummary summary;
+      summary.case_file  = p.case_file;
+      summary.settings   = {{"analysis", p.analysis},
+                          {"model", p.model},
+                          {"mesh_file", p.mesh_file},
+                          {"element_degree", std::to_string(p.element_degree)},
+                          {"law", settings.law},
+                          {"formulation", settings.mixed ? "mixed" : "displacement"},
+                          {"status", failure.empty() ? "completed" : failure},
+                          {"curve", curve_file}};
+      summary.parameters = p.geometry_parameters;
+      summary.quantities = quantities;
+      summary.quantities["load_factor"]       = problem.load_factor;
+      summary.quantities["load_steps"]        = n_steps;
+      summary.quantities["step_cutbacks"]     = n_cutbacks;
+      summary.quantities["newton_iterations"] = total_newton;
+      summary.quantities["time_total"]        = timer.wall_time();
+      finish_run(context, summary, problem.expression_variables(),
+                 [&](const std::string &directory) { write_fields(problem, directory); });
+      if (!failure.empty())
+        {
+          if (root)
+            std::cerr << "error: " << failure << "; converged steps are in " << curve_file
+                      << std::endl;
+          return 3;
+        }
+      return 0;
+    }
+  } // namespace
+
+  Analysis nonlinear_static_analysis()
+  {
+    return {"nonlinear static",
+            "total-Lagrangian finite strain, Newton-Raphson with adaptive load steps (see "
+            "subsection Finite strain)",
+            declare,
+            [](const RunContext &context) {
+              return context.parameters.dimension == 2 ? run<2>(context) : run<3>(context);
+            }};
+  }
+} // namespace compliant

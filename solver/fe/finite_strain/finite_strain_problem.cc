@@ -1,0 +1,598 @@
+#include "finite_strain/finite_strain_problem.h"
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgp.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include "elasticity/rigid_rotation.h"
+#include "input/spec_list.h"
+#include "linear_algebra/petsc_linear_solver.h"
+#include "mesh/mesh_reader.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+namespace compliant
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // A vector function multiplied by the load factor.
+    template <int dim>
+    class Scaled : public Function<dim>
+    {
+    public:
+      Scaled(const Function<dim> &f, double factor) : Function<dim>(dim), f(f), factor(factor) {}
+      void vector_value(const Point<dim> &p, Vector<double> &v) const override
+      {
+        f.vector_value(p, v);
+        v *= factor;
+      }
+
+    private:
+      const Function<dim> &f;
+      double               factor;
+    };
+
+    template <int dim>
+    std::unique_ptr<FunctionParser<dim>> make_parser(const std::vector<std::string> &expressions,
+                                                     const std::map<std::string, double> &constants,
+                                                     const std::string &where)
+    {
+      auto parser = std::make_unique<FunctionParser<dim>>(expressions.size());
+      try
+        {
+          parser->initialize(dim == 2 ? "x,y" : "x,y,z", expressions, constants);
+          Vector<double> probe(expressions.size());
+          parser->vector_value(Point<dim>(), probe);
+        }
+      catch (const std::exception &)
+        {
+          throw std::invalid_argument(where + ": cannot evaluate '" + expressions[0] +
+                                      "'; use x, y, z and geometry parameters");
+        }
+      return parser;
+    }
+
+    template <int dim>
+    SymmetricTensor<2, dim> sym(const Tensor<2, dim> &t)
+    {
+      return symmetrize(t);
+    }
+
+    // E = (H + H^T + H^T H) / 2 from the displacement gradient H, without forming C - I.
+    template <int dim>
+    SymmetricTensor<2, dim> green_lagrange(const Tensor<2, dim> &H)
+    {
+      return symmetrize(H) + 0.5 * symmetrize(transpose(H) * H);
+    }
+  } // namespace
+
+  template <int dim>
+  FiniteStrainProblem<dim>::FiniteStrainProblem(const CaseParameters       &parameters,
+                                                const FiniteStrainSettings &settings,
+                                                const MeshedGeometry       &geometry,
+                                                MPI_Comm                    communicator)
+    : parameters(parameters)
+    , settings(settings)
+    , geometry(geometry)
+    , communicator(communicator)
+    , triangulation(communicator, Triangulation<dim>::none, false,
+                    parallel::shared::Triangulation<dim>::partition_metis)
+    , dof_handler(triangulation)
+    , thickness(dim == 2 ? parameters.thickness : 1.0)
+    , mixed(settings.mixed)
+  {}
+
+  template <int dim>
+  void FiniteStrainProblem<dim>::setup()
+  {
+    if (geometry.dimension != dim)
+      throw std::invalid_argument("Model = " + parameters.model + " needs a " +
+                                  std::to_string(dim) + "D mesh, but '" + parameters.mesh_file +
+                                  "' is " + std::to_string(geometry.dimension) + "D");
+    if (dim == 2 && parameters.model != "plane strain")
+      throw std::invalid_argument("Model: finite strain in 2D is plane strain only (plane stress "
+                                  "needs the thickness stretch as an unknown); got '" +
+                                  parameters.model + "'");
+    create_triangulation(triangulation, geometry, parameters.global_refinements);
+    if (!triangulation.all_reference_cells_are_hyper_cube())
+      throw std::invalid_argument("Finite strain: the mesh must be quadrilaterals/hexahedra");
+
+    const unsigned int degree = parameters.element_degree;
+    if (mixed)
+      fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim, FE_DGP<dim>(degree - 1), 1);
+    else
+      fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
+    mapping         = std::make_unique<MappingQ<dim>>(1);
+    quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
+    face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
+
+    materials = assign_materials(parameters.materials, geometry.material_ids, parameters.unit_system);
+    for (const auto &[id, material] : materials)
+      laws.emplace(id, HyperelasticLaw(settings.law, material, settings.mooney_rivlin_ratio));
+    if (mixed && settings.law == "Saint Venant-Kirchhoff")
+      throw std::invalid_argument("Finite strain/Formulation: the mixed formulation needs a "
+                                  "neo-Hookean or Mooney-Rivlin law");
+    boundary_conditions = resolve_boundary_conditions<dim>(parameters, geometry.boundary_ids);
+    if (!boundary_conditions.total_forces.empty())
+      throw std::invalid_argument("Loads/Total force: not available in finite strain (the loaded "
+                                  "area changes); use Traction (dead, per reference area)");
+    dead_tractions = boundary_conditions.tractions;
+    for (const auto &item : parse_spec_list(settings.follower_pressure, "Finite strain/Follower pressure"))
+      {
+        if (item.fields.size() != 1 || !item.fields[0].key.empty())
+          throw std::invalid_argument("Finite strain/Follower pressure: expected 'boundary: p'");
+        follower_pressures[boundary_id_of(item.name, geometry.boundary_ids,
+                                          "Finite strain/Follower pressure")] = {item.fields[0].value};
+      }
+    for (const auto &[id, expressions] : boundary_conditions.traction_fields)
+      make_parser<dim>(expressions, parameters.geometry_parameters, "Loads/Traction");
+    for (const auto &[id, expressions] : follower_pressures)
+      make_parser<dim>(expressions, parameters.geometry_parameters, "Finite strain/Follower pressure");
+
+    dof_handler.distribute_dofs(*fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    solution.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
+
+    const PETScWrappers::MPI::Vector zero(locally_owned_dofs, locally_relevant_dofs, communicator);
+    const auto             constraints = make_constraints(0, true, zero);
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator,
+                                               locally_relevant_dofs);
+    tangent.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+  }
+
+  template <int dim>
+  AffineConstraints<double>
+  FiniteStrainProblem<dim>::make_constraints(const double lambda, const bool homogeneous,
+                                             const PETScWrappers::MPI::Vector &u) const
+  {
+    AffineConstraints<double> constraints;
+    constraints.reinit(locally_relevant_dofs);
+    const ComponentMask displacement = fe->component_mask(FEValuesExtractors::Vector(0));
+    std::vector<bool>   all(fe->n_components(), false);
+    for (unsigned int d = 0; d < dim; ++d)
+      all[d] = true;
+    for (const auto &[name, id] : boundary_conditions.clamped)
+      VectorTools::interpolate_boundary_values(*mapping, dof_handler, id,
+                                               Functions::ZeroFunction<dim>(fe->n_components()),
+                                               constraints, displacement);
+    for (const auto &d : boundary_conditions.displacements)
+      {
+        auto parser = make_parser<dim>(d.expressions, parameters.geometry_parameters,
+                                       "Boundary conditions/Displacement");
+        std::vector<bool> mask(fe->n_components(), false);
+        for (unsigned int c = 0; c < dim; ++c)
+          mask[c] = d.mask[c];
+        // pad the parser to all components (pressure: unused)
+        class Padded : public Function<dim>
+        {
+        public:
+          Padded(const Function<dim> &f, double s, unsigned int n) : Function<dim>(n), f(f), s(s) {}
+          void vector_value(const Point<dim> &p, Vector<double> &v) const override
+          {
+            Vector<double> w(dim);
+            f.vector_value(p, w);
+            v = 0;
+            for (unsigned int c = 0; c < dim; ++c)
+              v[c] = s * w[c];
+          }
+          const Function<dim> &f;
+          double               s;
+        };
+        VectorTools::interpolate_boundary_values(*mapping, dof_handler, d.boundary_id,
+                                                 Padded(*parser, lambda, fe->n_components()),
+                                                 constraints, ComponentMask(mask));
+      }
+    for (const auto &r : boundary_conditions.rotations)
+      {
+        class PaddedRotation : public Function<dim>
+        {
+        public:
+          PaddedRotation(const RigidRotation<dim> &f, unsigned int n) : Function<dim>(n), f(f) {}
+          void vector_value(const Point<dim> &p, Vector<double> &v) const override
+          {
+            Vector<double> w(dim);
+            f.vector_value(p, w);
+            v = 0;
+            for (unsigned int c = 0; c < dim; ++c)
+              v[c] = w[c];
+          }
+          const RigidRotation<dim> &f;
+        };
+        const RigidRotation<dim> rotation(lambda * r.angle, r.center, r.axis);
+        VectorTools::interpolate_boundary_values(*mapping, dof_handler, r.boundary_id,
+                                                 PaddedRotation(rotation, fe->n_components()),
+                                                 constraints, displacement);
+      }
+    // Newton solves for the correction: the Dirichlet value minus the current displacement.
+    for (const auto &line : constraints.get_lines())
+      constraints.set_inhomogeneity(line.index, homogeneous ? 0. : line.inhomogeneity - u[line.index]);
+    constraints.close();
+    return constraints;
+  }
+
+  template <int dim>
+  void FiniteStrainProblem<dim>::assemble(const PETScWrappers::MPI::Vector &u, const double lambda,
+                                          const AffineConstraints<double> *constraints,
+                                          const bool                       with_matrix,
+                                          PETScWrappers::MPI::Vector      &residual) const
+  {
+    if (with_matrix)
+      tangent = 0;
+    residual = 0;
+    const FEValuesExtractors::Vector displacement(0);
+    const FEValuesExtractors::Scalar pressure(dim);
+    FEValues<dim>     fe_values(*mapping, *fe, *quadrature,
+                            update_values | update_gradients | update_JxW_values);
+    FEFaceValues<dim> fe_face_values(*mapping, *fe, *face_quadrature,
+                                     update_values | update_gradients | update_JxW_values |
+                                       update_quadrature_points | update_normal_vectors);
+    const unsigned int n = fe->n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(n, n);
+    Vector<double>     cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<Tensor<2, dim>>          grad_u(quadrature->size()), face_grad_u(face_quadrature->size());
+    std::vector<double>                  p_values(quadrature->size());
+    std::vector<Tensor<2, dim>>          grad_phi(n);
+    std::vector<SymmetricTensor<2, dim>> dE(n), C_dE(n);
+    std::vector<Tensor<1, dim>>          phi(n);
+    std::vector<double>                  q_phi(n);
+    std::vector<bool>                    is_u(n);
+    for (unsigned int i = 0; i < n; ++i)
+      is_u[i] = fe->system_to_component_index(i).first < dim;
+
+    std::map<int, std::unique_ptr<FunctionParser<dim>>> traction_fields, pressure_fields;
+    for (const auto &[id, e] : boundary_conditions.traction_fields)
+      traction_fields[id] = make_parser<dim>(e, parameters.geometry_parameters, "Loads/Traction");
+    for (const auto &[id, e] : follower_pressures)
+      pressure_fields[id] = make_parser<dim>(e, parameters.geometry_parameters, "Follower pressure");
+    Vector<double> field_value(dim), pressure_value(1);
+
+    unsigned int inverted = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_gradients(u, grad_u);
+          if (mixed)
+            fe_values[pressure].get_function_values(u, p_values);
+          cell_matrix = 0;
+          cell_rhs    = 0;
+          const HyperelasticLaw &law        = laws.at(cell->material_id());
+          const Material        &material   = materials.at(cell->material_id());
+          const auto body_force = lambda * (boundary_conditions.body_force +
+                                            material.density * boundary_conditions.gravity);
+          for (unsigned int q = 0; q < quadrature->size(); ++q)
+            {
+              const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + grad_u[q];
+              if (!(determinant(F) > 0))
+                {
+                  ++inverted;
+                  break;
+                }
+              const auto   E        = green_lagrange(grad_u[q]);
+              const auto   response = law.response(E, mixed, mixed ? p_values[q] : 0.0);
+              const double JxW      = fe_values.JxW(q) * thickness;
+              const auto   Ci       = invert(unit_symmetric_tensor<dim>() + 2 * E);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  if (is_u[i])
+                    {
+                      grad_phi[i] = fe_values[displacement].gradient(i, q);
+                      phi[i]      = fe_values[displacement].value(i, q);
+                      dE[i]       = sym(transpose(F) * grad_phi[i]);
+                      C_dE[i]     = response.tangent * dE[i];
+                    }
+                  else
+                    q_phi[i] = fe_values[pressure].value(i, q);
+                }
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  if (is_u[i])
+                    cell_rhs(i) -= (response.S * dE[i] - body_force * phi[i]) * JxW;
+                  else
+                    cell_rhs(i) -= (response.log_J - p_values[q] / law.lambda()) * q_phi[i] * JxW;
+                  if (!with_matrix)
+                    continue;
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      double k = 0;
+                      if (is_u[i] && is_u[j])
+                        k = dE[i] * C_dE[j] +
+                            scalar_product(grad_phi[i] * Tensor<2, dim>(response.S), grad_phi[j]);
+                      else if (is_u[i])
+                        k = (dE[i] * Ci) * q_phi[j];
+                      else if (is_u[j])
+                        k = (dE[j] * Ci) * q_phi[i];
+                      else
+                        k = -q_phi[i] * q_phi[j] / law.lambda();
+                      cell_matrix(i, j) += k * JxW;
+                    }
+                }
+            }
+
+          for (const auto f : cell->face_indices())
+            {
+              if (!cell->face(f)->at_boundary())
+                continue;
+              const int  id        = cell->face(f)->boundary_id();
+              const auto dead      = dead_tractions.find(id);
+              const auto field     = traction_fields.find(id);
+              const auto follower  = pressure_fields.find(id);
+              if (dead == dead_tractions.end() && field == traction_fields.end() &&
+                  follower == pressure_fields.end())
+                continue;
+              fe_face_values.reinit(cell, f);
+              if (follower != pressure_fields.end())
+                fe_face_values[displacement].get_function_gradients(u, face_grad_u);
+              for (unsigned int q = 0; q < face_quadrature->size(); ++q)
+                {
+                  const double dA = fe_face_values.JxW(q) * thickness;
+                  Tensor<1, dim> t;
+                  if (dead != dead_tractions.end())
+                    t += dead->second;
+                  if (field != traction_fields.end())
+                    {
+                      field->second->vector_value(fe_face_values.quadrature_point(q), field_value);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        t[d] += field_value[d];
+                    }
+                  t *= lambda;
+                  // Follower pressure on the deformed surface: t dA = -p cof(F) N dA0.
+                  Tensor<2, dim> F, F_inv_T, cof;
+                  double         p = 0;
+                  const auto     N = fe_face_values.normal_vector(q);
+                  if (follower != pressure_fields.end())
+                    {
+                      follower->second->vector_value(fe_face_values.quadrature_point(q), pressure_value);
+                      p       = lambda * pressure_value[0];
+                      F       = unit_symmetric_tensor<dim>() + face_grad_u[q];
+                      F_inv_T = transpose(invert(F));
+                      cof     = determinant(F) * F_inv_T;
+                      t -= p * (cof * N);
+                    }
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      if (!is_u[i])
+                        continue;
+                      const auto phi_i = fe_face_values[displacement].value(i, q);
+                      cell_rhs(i) += phi_i * t * dA;
+                      if (!with_matrix || follower == pressure_fields.end())
+                        continue;
+                      for (unsigned int j = 0; j < n; ++j)
+                        {
+                          if (!is_u[j])
+                            continue;
+                          // d cof(F)[dF] = J (F^-T : dF) F^-T - J F^-T dF^T F^-T
+                          const auto dF   = fe_face_values[displacement].gradient(j, q);
+                          const auto dcof = determinant(F) * (scalar_product(F_inv_T, dF) * F_inv_T -
+                                                              F_inv_T * transpose(dF) * F_inv_T);
+                          cell_matrix(i, j) += p * (phi_i * (dcof * N)) * dA;
+                        }
+                    }
+                }
+            }
+
+          cell->get_dof_indices(dofs);
+          if (constraints != nullptr && with_matrix)
+            constraints->distribute_local_to_global(cell_matrix, cell_rhs, dofs, tangent, residual);
+          else if (constraints != nullptr)
+            constraints->distribute_local_to_global(cell_rhs, dofs, residual);
+          else
+            residual.add(dofs, cell_rhs);
+        }
+    if (with_matrix)
+      tangent.compress(VectorOperation::add);
+    residual.compress(VectorOperation::add);
+    if (Utilities::MPI::sum(inverted, communicator) > 0)
+      throw StepFailure("an element inverted (det F <= 0) at load factor " +
+                        std::to_string(lambda));
+  }
+
+  template <int dim>
+  double FiniteStrainProblem<dim>::residual_norm(const PETScWrappers::MPI::Vector &u,
+                                                 const double                      lambda,
+                                                 const AffineConstraints<double>  &homogeneous) const
+  {
+    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+    ghosted = u;
+    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator);
+    assemble(ghosted, lambda, &homogeneous, false, rhs);
+    return rhs.l2_norm();
+  }
+
+  template <int dim>
+  NewtonReport FiniteStrainProblem<dim>::solve_to(const double target)
+  {
+    NewtonReport               report;
+    PETScWrappers::MPI::Vector u(locally_owned_dofs, communicator), du(locally_owned_dofs, communicator);
+    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator);
+    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+    u       = solution;
+    ghosted = solution;
+    const auto homogeneous = make_constraints(target, true, ghosted);
+    LinearSolverSettings direct{"direct", 1e-12, 1, parameters.petsc_options};
+
+    // Force scale for the convergence test: internal forces including the reactions.
+    auto force_norm = [&](const PETScWrappers::MPI::Vector &state) {
+      PETScWrappers::MPI::Vector full(locally_owned_dofs, communicator);
+      assemble(state, target, nullptr, false, full);
+      return full.l2_norm();
+    };
+
+    try
+      {
+        for (unsigned int it = 0; it < settings.max_newton_iterations; ++it)
+          {
+            ghosted                = u;
+            const auto constraints = make_constraints(target, false, ghosted);
+            assemble(ghosted, target, &constraints, true, rhs);
+            const double r = rhs.l2_norm();
+            report.residual = r;
+            if (std::getenv("COMPLIANT_DEBUG_NEWTON") &&
+                Utilities::MPI::this_mpi_process(communicator) == 0)
+              std::cout << "    it " << it << " residual " << r << " scale "
+                        << (it > 0 ? force_norm(ghosted) : 0.) << std::endl;
+            if (it > 0)
+              {
+                const double scale    = std::max(force_norm(ghosted), 1e-300);
+                report.residual_scale = scale;
+                if (r <= settings.residual_tolerance * scale)
+                  {
+                    report.iterations = it;
+                    solution          = u;
+                    load_factor       = target;
+                    return report;
+                  }
+              }
+            if (!std::isfinite(r))
+              throw StepFailure("the residual is not finite");
+            du = 0;
+            solve_linear_system(tangent, du, rhs, {}, direct);
+            ++total_linear_solves;
+            constraints.distribute(du);
+            // Backtracking only against a step that inverts elements or blows the residual up
+            // by orders of magnitude: a plain residual-decrease test rejects good Newton steps
+            // of slender structures, whose residual rises for an iteration before it collapses.
+            // Dirichlet values are re-imposed relative to the current state every iteration,
+            // so a shortened step is safe.
+            double alpha = 1;
+            for (unsigned int cut = 0; cut < settings.line_search_steps; ++cut)
+                {
+                  PETScWrappers::MPI::Vector trial = u;
+                  trial.add(alpha, du);
+                  double trial_norm;
+                  try
+                    {
+                      trial_norm = residual_norm(trial, target, homogeneous);
+                    }
+                  catch (const StepFailure &)
+                    {
+                      trial_norm = std::numeric_limits<double>::infinity();
+                    }
+                  if (trial_norm < 1e3 * std::max(r, report.residual_scale))
+                    break;
+                  alpha /= 2;
+                  ++report.line_search_cuts;
+                }
+            u.add(alpha, du);
+            // At the round-off floor of the residual the correction tells convergence.
+            if (it > 0 && alpha * du.l2_norm() <= 1e-10 * u.l2_norm())
+              {
+                report.iterations = it + 1;
+                solution          = u;
+                load_factor       = target;
+                return report;
+              }
+          }
+        throw StepFailure("Newton did not converge in " +
+                          std::to_string(settings.max_newton_iterations) +
+                          " iterations (residual " + std::to_string(report.residual) + ")");
+      }
+    catch (const std::runtime_error &e)
+      {
+        // solution is untouched: the converged state of the previous step remains
+        throw StepFailure(e.what());
+      }
+  }
+
+  template <int dim>
+  double FiniteStrainProblem<dim>::tangent_consistency(const PETScWrappers::MPI::Vector &u,
+                                                       const PETScWrappers::MPI::Vector &v,
+                                                       const double lambda, const double h) const
+  {
+    AffineConstraints<double> none;
+    none.close();
+    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator), plus(rhs), minus(rhs), Kv(rhs);
+    PETScWrappers::MPI::Vector state(locally_owned_dofs, communicator);
+    ghosted = u;
+    assemble(ghosted, lambda, &none, true, rhs);
+    tangent.vmult(Kv, v);
+    state = u;
+    state.add(h, v);
+    ghosted = state;
+    assemble(ghosted, lambda, nullptr, false, plus);
+    state.add(-2 * h, v);
+    ghosted = state;
+    assemble(ghosted, lambda, nullptr, false, minus);
+    // rhs = f_ext - f_int, so K v = -(d rhs / du) v
+    PETScWrappers::MPI::Vector difference = minus;
+    difference.add(-1, plus);
+    difference /= 2 * h;
+    difference.add(-1, Kv);
+    return difference.l2_norm() / Kv.l2_norm();
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim> FiniteStrainProblem<dim>::cauchy_stress(const Tensor<2, dim> &grad_u,
+                                                                  const Material &material,
+                                                                  const double    pressure,
+                                                                  double         &sigma_zz) const
+  {
+    const HyperelasticLaw law(settings.law, material, settings.mooney_rivlin_ratio);
+    const Tensor<2, dim>  F = unit_symmetric_tensor<dim>() + grad_u;
+    const double          J = determinant(F);
+    const auto            r = law.response(green_lagrange(grad_u), mixed, pressure);
+    sigma_zz                = r.S33 / J;
+    return sym(F * Tensor<2, dim>(r.S) * transpose(F)) / J;
+  }
+
+  template <int dim>
+  double FiniteStrainProblem<dim>::von_mises(const SymmetricTensor<2, dim> &s, const double sigma_zz) const
+  {
+    double s3[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, sigma_zz}};
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        s3[i][j] = s[i][j];
+    const double a = s3[0][0] - s3[1][1], b = s3[1][1] - s3[2][2], c = s3[2][2] - s3[0][0];
+    return std::sqrt(0.5 * (a * a + b * b + c * c) +
+                     3 * (s3[0][1] * s3[0][1] + s3[1][2] * s3[1][2] + s3[0][2] * s3[0][2]));
+  }
+
+  template <int dim>
+  double FiniteStrainProblem<dim>::energy_density(const Tensor<2, dim> &grad_u,
+                                                  const Material       &material) const
+  {
+    const HyperelasticLaw law(settings.law, material, settings.mooney_rivlin_ratio);
+    return law.response(green_lagrange(grad_u), false, 0.0).energy;
+  }
+
+  template <int dim>
+  PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::reaction_forces() const
+  {
+    PETScWrappers::MPI::Vector residual(locally_owned_dofs, communicator);
+    assemble(solution, load_factor, nullptr, false, residual);
+    residual *= -1; // assemble gives f_ext - f_int
+    return residual;
+  }
+
+  template <int dim>
+  std::map<std::string, double> FiniteStrainProblem<dim>::expression_variables() const
+  {
+    auto            variables = parameters.geometry_parameters;
+    const Material &first     = materials.begin()->second;
+    variables["thickness"]    = thickness;
+    variables["E"]            = first.youngs_modulus;
+    variables["nu"]           = first.poissons_ratio;
+    variables["G"]            = first.shear_modulus();
+    variables["load_factor"]  = load_factor;
+    return variables;
+  }
+
+  template class FiniteStrainProblem<2>;
+  template class FiniteStrainProblem<3>;
+} // namespace compliant

@@ -1,0 +1,125 @@
+// Total-Lagrangian finite-strain elasticity (plane strain and 3D): displacement-only, or mixed
+// displacement-pressure (Q_p / discontinuous P_(p-1) pressure) against volumetric locking.
+// Newton-Raphson with the consistent tangent and a backtracking line search; loads and imposed
+// motions are scaled by a load factor that the analysis steps.
+#pragma once
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include "elasticity/boundary_conditions.h"
+#include "elasticity/material.h"
+#include "finite_strain/hyperelastic_law.h"
+#include "input/case_file.h"
+#include "mesh/gmsh_geometry.h"
+
+#include <memory>
+#include <stdexcept>
+
+namespace compliant
+{
+  struct FiniteStrainSettings
+  {
+    std::string law = "neo-Hookean";
+    double      mooney_rivlin_ratio = 0;
+    bool        mixed = false;
+    std::string follower_pressure; // 'boundary: expression' (reference coordinates x, y, z)
+    unsigned    max_newton_iterations = 25;
+    double      residual_tolerance = 1e-9; // relative to the internal force scale
+    unsigned    line_search_steps  = 5;
+  };
+
+  // A load step that did not converge; the analysis cuts the step back.
+  struct StepFailure : std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+
+  struct NewtonReport
+  {
+    unsigned int iterations = 0;
+    double       residual   = 0;
+    double       residual_scale = 0; // internal force norm the residual is measured against
+    unsigned int line_search_cuts = 0;
+  };
+
+  template <int dim>
+  class FiniteStrainProblem
+  {
+  public:
+    static constexpr int dimension = dim;
+
+    FiniteStrainProblem(const CaseParameters &parameters, const FiniteStrainSettings &settings,
+                        const MeshedGeometry &geometry, MPI_Comm communicator);
+
+    void setup();
+
+    // Newton from the current state to the given load factor. On success the state is updated;
+    // on failure (no convergence, det F <= 0, linear solver) the state is restored and a
+    // StepFailure says why.
+    NewtonReport solve_to(double load_factor);
+
+    // Cauchy stress (and its out-of-plane component in plane strain) from a displacement gradient.
+    dealii::SymmetricTensor<2, dim> cauchy_stress(const dealii::Tensor<2, dim> &grad_u,
+                                                  const Material &material, double pressure,
+                                                  double &sigma_zz) const;
+    double von_mises(const dealii::SymmetricTensor<2, dim> &stress, double sigma_zz) const;
+    double energy_density(const dealii::Tensor<2, dim> &grad_u, const Material &material) const;
+
+    // Check of the consistent tangent: |K v - (R(u + h v) - R(u - h v)) / 2h| / |K v| at the
+    // state u (unconstrained; meant for problems without Dirichlet conditions).
+    double tangent_consistency(const dealii::PETScWrappers::MPI::Vector &u,
+                               const dealii::PETScWrappers::MPI::Vector &v, double lambda,
+                               double h) const;
+
+    // f_int(u) - f_ext(u) without constraints: the support reactions.
+    dealii::PETScWrappers::MPI::Vector reaction_forces() const;
+    std::map<std::string, double>      expression_variables() const;
+
+    const CaseParameters                        &parameters;
+    const FiniteStrainSettings                  &settings;
+    const MeshedGeometry                        &geometry;
+    MPI_Comm                                     communicator;
+    dealii::parallel::shared::Triangulation<dim> triangulation;
+    std::unique_ptr<dealii::FiniteElement<dim>>  fe;
+    std::unique_ptr<dealii::Mapping<dim>>        mapping;
+    std::unique_ptr<dealii::Quadrature<dim>>     quadrature;
+    std::unique_ptr<dealii::Quadrature<dim - 1>> face_quadrature;
+    dealii::DoFHandler<dim>                      dof_handler;
+    dealii::IndexSet                             locally_owned_dofs, locally_relevant_dofs;
+    std::map<int, Material>                      materials;
+    std::map<int, HyperelasticLaw>               laws;
+    BoundaryConditions<dim>                      boundary_conditions;
+    double                                       thickness = 1;
+    double                                       load_factor = 0; // of the current state
+    bool                                         mixed       = false;
+
+    dealii::PETScWrappers::MPI::Vector solution; // ghosted, converged state
+    unsigned int                       total_linear_solves = 0;
+
+  private:
+    // Dirichlet values at load factor `lambda` minus the current displacement (first Newton
+    // iteration), or homogeneous (later iterations).
+    dealii::AffineConstraints<double> make_constraints(double lambda, bool homogeneous,
+                                                       const dealii::PETScWrappers::MPI::Vector &u) const;
+    // Assembles the residual f_int - lambda f_ext (and the tangent if asked) at state u.
+    // Throws StepFailure when an element inverts.
+    void assemble(const dealii::PETScWrappers::MPI::Vector &u, double lambda,
+                  const dealii::AffineConstraints<double> *constraints, bool with_matrix,
+                  dealii::PETScWrappers::MPI::Vector &residual) const;
+    double residual_norm(const dealii::PETScWrappers::MPI::Vector &u, double lambda,
+                         const dealii::AffineConstraints<double> &homogeneous) const;
+
+    mutable dealii::PETScWrappers::MPI::SparseMatrix tangent;
+    std::map<int, std::vector<std::string>>          follower_pressures; // per boundary id
+    std::map<int, dealii::Tensor<1, dim>>            dead_tractions;
+    double                                           force_scale = 0;
+  };
+} // namespace compliant

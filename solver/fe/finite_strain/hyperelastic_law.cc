@@ -1,0 +1,98 @@
+#include "finite_strain/hyperelastic_law.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace compliant
+{
+  using namespace dealii;
+
+  HyperelasticLaw::HyperelasticLaw(const std::string &kind, const Material &material,
+                                   const double mooney_rivlin_ratio)
+    : svk(kind == "Saint Venant-Kirchhoff")
+  {
+    mu                  = material.shear_modulus();
+    lambda_small_strain = material.lame_lambda();
+    const double ratio  = kind == "Mooney-Rivlin" ? mooney_rivlin_ratio : 0.0;
+    c1                  = (1 - ratio) * mu / 2;
+    c2                  = ratio * mu / 2;
+    // the c2 term adds 4 c2 to the small-strain lambda: compensate so E and nu hold at C = I
+    lambda_volumetric = lambda_small_strain - 4 * c2;
+  }
+
+  namespace
+  {
+    // (C^-1 (x) C^-1) symmetrised: I_ijkl = (Ci_ik Ci_jl + Ci_il Ci_jk) / 2 = -dC^-1/dC
+    template <int dim>
+    SymmetricTensor<4, dim> inverse_product(const SymmetricTensor<2, dim> &Ci)
+    {
+      SymmetricTensor<4, dim> result;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = k; l < dim; ++l)
+              result[i][j][k][l] = 0.5 * (Ci[i][k] * Ci[j][l] + Ci[i][l] * Ci[j][k]);
+      return result;
+    }
+  } // namespace
+
+  namespace
+  {
+    // ln J = ln sqrt(det(I + H)) with H = 2E, computed without forming det - 1 by subtraction.
+    template <int dim>
+    double log_J(const SymmetricTensor<2, dim> &E)
+    {
+      const SymmetricTensor<2, dim> H  = 2 * E;
+      const double                  tr = trace(H);
+      double det_minus_one = tr + determinant(H);
+      if (dim == 3)
+        det_minus_one += 0.5 * (tr * tr - H * H);
+      return 0.5 * std::log1p(det_minus_one);
+    }
+  } // namespace
+
+  template <int dim>
+  StressResponse<dim> HyperelasticLaw::response(const SymmetricTensor<2, dim> &E, const bool mixed,
+                                                const double pressure) const
+  {
+    StressResponse<dim>           r;
+    const SymmetricTensor<2, dim> I   = unit_symmetric_tensor<dim>();
+    const double                  trE = trace(E);
+    r.log_J                           = log_J(E);
+    if (svk)
+      {
+        r.S       = lambda_small_strain * trE * I + 2 * mu * E;
+        r.tangent = lambda_small_strain * outer_product(I, I) + 2 * mu * identity_tensor<dim>();
+        r.energy  = 0.5 * lambda_small_strain * trE * trE + mu * (E * E);
+        r.S33     = dim == 2 ? lambda_small_strain * trE : 0;
+        return r;
+      }
+    const SymmetricTensor<2, dim> C   = I + 2 * E;
+    const auto                    Ci  = invert(C);
+    const auto                    IC  = inverse_product(Ci);
+    const double                  a   = 2 * (c1 + 2 * c2);
+    // I - C^-1 = 2 C^-1 E, symmetric in exact arithmetic
+    const SymmetricTensor<2, dim> I_minus_Ci = symmetrize(2 * (Tensor<2, dim>(Ci) * Tensor<2, dim>(E)));
+    // p plays the role of lambda ln J in the mixed form
+    const double p = mixed ? pressure : lambda_volumetric * r.log_J;
+
+    // 2 c1 (I - C^-1) + 2 c2 [(I1 I - C) - 2 C^-1] + p C^-1, the bracket = 2 tr E I - 2 E + 2 (I - C^-1)
+    r.S = 2 * c1 * I_minus_Ci + 2 * c2 * (2 * trE * I - 2 * E + 2 * I_minus_Ci) + p * Ci;
+    r.tangent = 4 * c2 * (outer_product(I, I) - identity_tensor<dim>()) + 2 * (a - p) * IC;
+    if (!mixed)
+      r.tangent += lambda_volumetric * outer_product(Ci, Ci);
+    // I1 - 3 = 2 tr E; I2 - 3 = 4 tr E + 2 ((tr E)^2 - E:E) (also in plane strain, C33 = 1)
+    r.energy = c1 * 2 * trE + c2 * (4 * trE + 2 * (trE * trE - E * E)) - a * r.log_J +
+               (mixed ? pressure * r.log_J - pressure * pressure / (2 * lambda_volumetric) :
+                        0.5 * lambda_volumetric * r.log_J * r.log_J);
+    // S33 = 2 c1 + 2 c2 (I1 - 1) - a + p with I1 - 1 = 2 + 2 tr E
+    if (dim == 2)
+      r.S33 = 4 * c2 * trE + p;
+    return r;
+  }
+
+  template StressResponse<2> HyperelasticLaw::response<2>(const SymmetricTensor<2, 2> &, bool,
+                                                          double) const;
+  template StressResponse<3> HyperelasticLaw::response<3>(const SymmetricTensor<2, 3> &, bool,
+                                                          double) const;
+} // namespace compliant

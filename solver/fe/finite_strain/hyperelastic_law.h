@@ -1,0 +1,52 @@
+// Hyperelastic laws for total-Lagrangian finite strain, in terms of the right Cauchy-Green
+// tensor C = I + 2E: second Piola-Kirchhoff stress S = 2 dW/dC and material tangent CC = 4 d2W/dC2.
+// In 2D the model is plane strain (C33 = 1).
+//
+// Mooney-Rivlin family (compressible; Holzapfel, Nonlinear Solid Mechanics, 2000, sec. 6.5):
+//   W = c1 (I1 - 3) + c2 (I2 - 3) - 2 (c1 + 2 c2) ln J + lambda/2 (ln J)^2
+// with mu = 2 (c1 + c2) and lambda chosen so that the small-strain limit has the Lame constants
+// of (E, nu); c2 = 0 is the compressible neo-Hookean law. For the mixed u-p formulation the
+// volumetric term lambda/2 (ln J)^2 is replaced by p ln J - p^2/(2 lambda).
+// Saint Venant-Kirchhoff: W = lambda/2 (tr E)^2 + mu E:E.
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include "elasticity/material.h"
+
+#include <string>
+
+namespace compliant
+{
+  template <int dim>
+  struct StressResponse
+  {
+    dealii::SymmetricTensor<2, dim> S;       // second Piola-Kirchhoff
+    dealii::SymmetricTensor<4, dim> tangent; // dS/dE
+    double                          energy   = 0;
+    double                          S33      = 0; // out-of-plane S in plane strain
+    double                          log_J    = 0;
+  };
+
+  class HyperelasticLaw
+  {
+  public:
+    // kind: "neo-Hookean", "Mooney-Rivlin", "Saint Venant-Kirchhoff". mooney_rivlin_ratio =
+    // c2 / (c1 + c2) in [0, 1).
+    HyperelasticLaw(const std::string &kind, const Material &material, double mooney_rivlin_ratio);
+
+    // Full response to the Green-Lagrange strain E = (C - I)/2 (E, not C: the stress of small
+    // strains is then free of cancellation); with `mixed`, the volumetric part is carried by the
+    // pressure p instead.
+    template <int dim>
+    StressResponse<dim> response(const dealii::SymmetricTensor<2, dim> &E, bool mixed,
+                                 double pressure) const;
+
+    double lambda() const { return lambda_volumetric; }
+    bool   is_saint_venant_kirchhoff() const { return svk; }
+
+  private:
+    bool   svk;
+    double c1, c2, lambda_volumetric, mu, lambda_small_strain;
+  };
+} // namespace compliant

@@ -1,0 +1,125 @@
+// The Newton tangent of the finite-strain problem against central differences of its residual,
+// for each law, the mixed formulation and a follower pressure, in 2D and 3D, at a state with
+// large rotation and stretch. A consistent tangent agrees to O(h^2) + round-off: the test asks
+// for 1e-6 relative with h = 1e-6 (measured about 1e-9).
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
+
+#include "finite_strain/finite_strain_problem.h"
+#include "mesh/gmsh_geometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace compliant;
+
+namespace
+{
+  template <int dim>
+  class LargeMotion : public dealii::Function<dim>
+  {
+  public:
+    LargeMotion(unsigned int n_components, double seed) : dealii::Function<dim>(n_components), seed(seed) {}
+    double value(const dealii::Point<dim> &p, unsigned int c) const override
+    {
+      // rotation by about 30 degrees plus stretch and a wavy field; pressure: smooth field
+      const double a = 0.5 + 0.1 * seed, x = p[0] / 10, y = p[1] / 10;
+      if (c == 0)
+        return 10 * ((std::cos(a) - 1) * x - std::sin(a) * y + 0.05 * std::sin(3 * y + seed));
+      if (c == 1)
+        return 10 * (std::sin(a) * x + (std::cos(a) - 1) * y + 0.04 * std::cos(2 * x));
+      if (c == 2 && dim == 3)
+        return 0.3 * std::sin(p[0] + seed);
+      return 0.2 * std::cos(p[0] + seed); // pressure
+    }
+
+  private:
+    double seed;
+  };
+
+  // Nodal values of f at the displacement support points; pressure DoFs (discontinuous P_k,
+  // which has no support points) get f's pressure component at the cell centre.
+  template <int dim>
+  void fill(const FiniteStrainProblem<dim> &problem, const dealii::Function<dim> &f,
+            dealii::PETScWrappers::MPI::Vector &vector)
+  {
+    const auto                      &fe = *problem.fe;
+    const dealii::Quadrature<dim>    support(fe.base_element(0).get_unit_support_points());
+    dealii::FEValues<dim>            values(*problem.mapping, fe, support, dealii::update_quadrature_points);
+    std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : problem.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          values.reinit(cell);
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            {
+              if (!problem.locally_owned_dofs.is_element(dofs[i]))
+                continue;
+              const unsigned int c = fe.system_to_component_index(i).first;
+              vector[dofs[i]] = c < dim ? f.value(values.quadrature_point(fe.system_to_base_index(i).second), c) :
+                                          f.value(cell->center(), c) / (1 + fe.system_to_base_index(i).second);
+            }
+        }
+    vector.compress(dealii::VectorOperation::insert);
+  }
+
+  template <int dim>
+  double check(const std::string &law, bool mixed, const std::string &follower, double seed)
+  {
+    CaseParameters p;
+    p.model       = dim == 2 ? "plane strain" : "3d";
+    p.dimension   = dim;
+    p.mesh_file   = std::string(COMPLIANT_SOURCE_DIR) + "/meshes/cantilever_" + std::to_string(dim) + "d.geo";
+    p.geometry_parameters = {{"L", 10}, {"H", 4}, {"ny", 2}};
+    if (dim == 3)
+      p.geometry_parameters["W"] = 3, p.geometry_parameters["nz"] = 1;
+    p.element_degree = 2;
+    p.materials      = "*: steel, E=1000, nu=0.45";
+    p.traction       = dim == 3 ? "sides: 0.5 -1 0.2" : "top: 0.5 -1";
+    p.body_force     = dim == 3 ? "0 -0.1 0.05" : "0 -0.1";
+    FiniteStrainSettings settings;
+    settings.law                 = law;
+    settings.mooney_rivlin_ratio = 0.3;
+    settings.mixed               = mixed;
+    settings.follower_pressure   = follower;
+    const auto geometry = mesh_geometry(p.mesh_file, p.geometry_parameters);
+    FiniteStrainProblem<dim> problem(p, settings, geometry, MPI_COMM_WORLD);
+    problem.setup();
+    dealii::PETScWrappers::MPI::Vector u(problem.locally_owned_dofs, MPI_COMM_WORLD), v(u);
+    fill(problem, LargeMotion<dim>(problem.fe->n_components(), seed), u);
+    fill(problem, LargeMotion<dim>(problem.fe->n_components(), seed + 1.7), v);
+    v /= v.l2_norm();
+    return problem.tangent_consistency(u, v, 0.8, 1e-6 * u.l2_norm());
+  }
+} // namespace
+
+TEST(FiniteStrainTangent, MatchesFiniteDifferences)
+{
+  struct Case
+  {
+    std::string law;
+    bool        mixed;
+    std::string follower;
+  };
+  for (const Case &c : {Case{"neo-Hookean", false, ""}, Case{"Mooney-Rivlin", false, ""},
+                        Case{"Saint Venant-Kirchhoff", false, ""}, Case{"neo-Hookean", true, ""},
+                        Case{"Mooney-Rivlin", true, ""},
+                        Case{"neo-Hookean", false, "right: 2 + 0.5*y"}})
+    {
+      const double error2 = check<2>(c.law, c.mixed, c.follower, 0.3);
+      const double error3 = check<3>(c.law, c.mixed, c.follower, 0.3);
+      std::cout << c.law << (c.mixed ? " mixed" : "") << (c.follower.empty() ? "" : " follower")
+                << ": 2D " << error2 << ", 3D " << error3 << std::endl;
+      EXPECT_LT(error2, 1e-6) << c.law;
+      EXPECT_LT(error3, 1e-6) << c.law;
+    }
+}
+
+int main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
