@@ -39,7 +39,8 @@ namespace compliant
         // A nonlinear run that converged no step has no quantities to compare.
         if (summary.quantities.count("n_dofs") > 0)
           {
-            add_derived_quantities(p.derived, summary.quantities, variables);
+            if (summary.quantities.count("load_factor") == 0) // nonlinear runs added them per step
+              add_derived_quantities(p.derived, summary.quantities, variables);
             summary.comparisons = run_checks(parse_checks(p.checks), summary.quantities, variables);
           }
       }

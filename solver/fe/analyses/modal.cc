@@ -87,9 +87,9 @@ namespace compliant
       MPI_Comm            comm = context.communicator;
       const bool          root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
       dealii::Timer       timer;
-      const ModalSettings settings = read_settings(context);
-      const ExtraConstraints    extra = read_extra_constraints(context.prm);
-      const bool supported = has_supports(p) || !extra.edge_supports.empty();
+      const ModalSettings    settings  = read_settings(context);
+      const ExtraConstraints extra     = read_extra_constraints(context.prm);
+      const bool             supported = has_supports(p) || !extra.edge_supports.empty();
       LinearElasticProblem<dim> problem(p, context.geometry, comm);
       // Supports hold still in a vibration: the constraints without their prescribed values.
       dealii::AffineConstraints<double> constraints;
@@ -107,6 +107,10 @@ namespace compliant
         {
           throw InputError("case file '" + p.case_file + "': " + e.what());
         }
+      if (settings.n_modes > problem.dof_handler.n_dofs() / 2)
+        throw InputError("case file '" + p.case_file + "': Modal/Number of modes = " +
+                         std::to_string(settings.n_modes) + " is too many for " +
+                         std::to_string(problem.dof_handler.n_dofs()) + " DoFs");
       if (root)
         std::cout << "Mesh: " << problem.triangulation.n_active_cells() << " cells, "
                   << problem.dof_handler.n_dofs() << " DoFs (degree " << p.element_degree << ", "
@@ -139,10 +143,6 @@ namespace compliant
       else
         eigen.shift = std::copysign(std::pow(two_pi * settings.shift_frequency, 2),
                                     settings.shift_frequency);
-      if (eigen.n_modes > problem.dof_handler.n_dofs() / 2)
-        throw InputError("case file '" + p.case_file + "': Modal/Number of modes = " +
-                         std::to_string(eigen.n_modes) + " is too many for " +
-                         std::to_string(problem.dof_handler.n_dofs()) + " DoFs");
       dealii::Timer eigen_timer;
       EigenResult   result =
         solve_eigenproblem(problem.system_matrix, mass, problem.locally_owned_dofs, eigen);

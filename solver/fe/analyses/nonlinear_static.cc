@@ -121,6 +121,15 @@ namespace compliant
               ++n_steps;
               total_newton += report.iterations;
               quantities = compute_quantities(problem);
+              // Derived quantities per step too, so curves can hold e.g. a link angle.
+              try
+                {
+                  add_derived_quantities(p.derived, quantities, problem.expression_variables());
+                }
+              catch (const std::invalid_argument &e)
+                {
+                  throw InputError("case file '" + p.case_file + "': " + e.what());
+                }
               if (root)
                 {
                   std::cout << "step " << std::setw(3) << n_steps << "  load factor "
@@ -171,6 +180,9 @@ namespace compliant
                 }
             }
         }
+
+      if (root && columns.empty()) // no step converged: the curve still says what it would hold
+        std::ofstream(curve_file) << "step,load_factor,newton_iterations\n";
 
       RunSummary summary;
       summary.case_file  = p.case_file;

@@ -71,6 +71,9 @@ namespace compliant
     std::map<int, Material>                     materials;
     BoundaryConditions<dim>                     boundary_conditions;
     double                                      thickness; // 1 in 3D
+    // The quantities' interface shared with the finite-strain problem.
+    static constexpr bool   geometrically_nonlinear = false;
+    static constexpr double load_factor             = 1;
 
     dealii::PETScWrappers::MPI::SparseMatrix system_matrix;
     dealii::PETScWrappers::MPI::Vector       system_rhs;

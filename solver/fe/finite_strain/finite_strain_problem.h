@@ -99,6 +99,7 @@ namespace compliant
     BoundaryConditions<dim>                      boundary_conditions;
     double                                       thickness = 1;
     double                                       load_factor = 0; // of the current state
+    static constexpr bool                        geometrically_nonlinear = true;
     bool                                         mixed       = false;
 
     dealii::PETScWrappers::MPI::Vector solution; // ghosted, converged state

@@ -111,25 +111,39 @@ namespace compliant
       return Quadrature<dim>(fe.base_element(0).get_unit_support_points());
     }
 
-    template <class Problem, int dim = Problem::dimension>
-    std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>>
-    owned_dof_locations(const Problem &problem)
+    template <int dim>
+    struct DofLocation
     {
-      std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>> locations;
+      unsigned int component;
+      Point<dim>   reference; // support point
+      Point<dim>   current;   // support point moved by the displacement
+    };
+
+    // Component and position of each locally owned displacement DoF.
+    template <class Problem, int dim = Problem::dimension>
+    std::map<types::global_dof_index, DofLocation<dim>> owned_dof_locations(const Problem &problem)
+    {
+      std::map<types::global_dof_index, DofLocation<dim>> locations;
       const Quadrature<dim> support = displacement_support_points(*problem.fe);
-      FEValues<dim> fe_values(*problem.mapping, *problem.fe, support, update_quadrature_points);
+      FEValues<dim> fe_values(*problem.mapping, *problem.fe, support,
+                              update_values | update_quadrature_points);
       std::vector<types::global_dof_index> dofs(problem.fe->n_dofs_per_cell());
+      std::vector<Tensor<1, dim>>          u(support.size());
       for (const auto &cell : problem.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
+            fe_values[FEValuesExtractors::Vector(0)].get_function_values(problem.solution, u);
             cell->get_dof_indices(dofs);
             for (unsigned int i = 0; i < dofs.size(); ++i)
               if (problem.locally_owned_dofs.is_element(dofs[i]) &&
                   problem.fe->system_to_component_index(i).first < dim)
-                locations[dofs[i]] = {problem.fe->system_to_component_index(i).first,
-                                      fe_values.quadrature_point(
-                                        problem.fe->system_to_base_index(i).second)};
+                {
+                  const unsigned int k = problem.fe->system_to_base_index(i).second;
+                  locations[dofs[i]]   = {problem.fe->system_to_component_index(i).first,
+                                        fe_values.quadrature_point(k),
+                                        fe_values.quadrature_point(k) + u[k]};
+                }
           }
       return locations;
     }
@@ -211,9 +225,11 @@ namespace compliant
           if (boundary_dofs.is_element(dof))
             {
               Tensor<1, 3> f, r;
-              f[location.first] = residual[dof];
+              f[location.component] = residual[dof];
+              // moments about the deformed positions in a geometrically nonlinear analysis
+              const Point<dim> &x = problem.geometrically_nonlinear ? location.current : location.reference;
               for (unsigned int d = 0; d < dim; ++d)
-                r[d] = location.second[d] - x0[d];
+                r[d] = x[d] - x0[d];
               force += f;
               moment += cross_product_3d(r, f);
             }
@@ -229,12 +245,13 @@ namespace compliant
             q["reaction_moment_" + name + "_" + axis_name[d]] = moment[d];
       }
     for (const auto &r : bc.rotations)
-      q["rotational_stiffness_" + r.boundary] = (moments[r.boundary] * r.axis) / r.angle;
+      q["rotational_stiffness_" + r.boundary] =
+        (moments[r.boundary] * r.axis) / (problem.load_factor * r.angle);
     for (const auto &d : bc.displacements)
       for (unsigned int c = 0; c < dim; ++c)
         if (d.is_constant && d.mask[c] && d.values[c] != 0)
           q["stiffness_" + d.boundary + "_" + axis_name[c]] =
-            q["reaction_force_" + d.boundary + "_" + axis_name[c]] / d.values[c];
+            q["reaction_force_" + d.boundary + "_" + axis_name[c]] / (problem.load_factor * d.values[c]);
 
     // Mean displacement over a boundary (surface average).
     for (const auto &name : names_in(p.mean_displacements))
@@ -278,10 +295,10 @@ namespace compliant
           if (boundary_dofs.is_element(dof))
             {
               double       row[6] = {0, 0, 0, 0, 0, 0};
-              const auto   c      = location.first;
+              const auto   c      = location.component;
               Tensor<1, 3> x;
               for (unsigned int d = 0; d < dim; ++d)
-                x[d] = location.second[d];
+                x[d] = location.reference[d];
               row[c] = 1;
               for (unsigned int j = 0; j < 3; ++j)
                 {
@@ -318,8 +335,8 @@ namespace compliant
     // Peak von Mises over quadrature points and element nodes; strain energy.
     {
       std::vector<Point<dim>> points = problem.quadrature->get_points();
-      for (const auto &x : displacement_support_points(*problem.fe).get_points())
-        points.push_back(x);
+      const auto              nodes  = displacement_support_points(*problem.fe); // kept alive
+      points.insert(points.end(), nodes.get_points().begin(), nodes.get_points().end());
       const Quadrature<dim> sample(points);
       const bool            has_pressure = problem.fe->n_components() > dim;
       const FEValuesExtractors::Vector u(0);

@@ -1,0 +1,79 @@
+#!/usr/bin/python3
+"""Checks of the nonlinear (finite-strain) analysis that need more than one run or a failing run.
+
+    finite_strain_checks.py small_load | cutback | stop | locking
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+here = os.path.dirname(os.path.abspath(__file__))
+cases = os.path.join(here, "..", "..", "cases")
+sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
+from study import mpi_env, run_case, solver_path  # noqa: E402
+
+failed = []
+
+
+def check(ok, text):
+    print(("PASS  " if ok else "FAIL  ") + text)
+    if not ok:
+        failed.append(text)
+
+
+mode = sys.argv[1]
+if mode == "small_load":
+    # In the small-load limit the nonlinear solve is the linear one (plane strain, nu = 0.3).
+    case = os.path.join(cases, "verification", "cantilever_2d.prm")
+    sets = ["Model=plane strain", "Loads/Total force=", "Loads/Traction=right: 0 -1e-4"]
+    linear = run_case(case, sets + ["Analysis=linear static"])["quantities"]
+    nonlinear = run_case(case, sets + ["Analysis=nonlinear static"])["quantities"]
+    for key in ("mean_displacement_right_y", "reaction_force_left_y", "reaction_moment_left_z"):
+        a, b = linear[key], nonlinear[key]
+        print("%-28s linear %.10g  nonlinear %.10g" % (key, a, b))
+        check(abs(a - b) <= 1e-5 * abs(a), "%s agrees to 1e-5 (strain ~1e-6: geometric terms ~1e-6)" % key)
+elif mode == "cutback":
+    # A single step to the full half-circle roll-up fails; the run cuts back and still arrives.
+    s = run_case(os.path.join(cases, "verification", "rollup_2d.prm"),
+                 ["Finite strain/Initial step=1", "Finite strain/Maximum step=1"])
+    q = s["quantities"]
+    print("cutbacks %d, steps %d, load factor %g, tip y %.4f" % (q["step_cutbacks"], q["load_steps"], q["load_factor"], q["displacement_tip_y"]))
+    check(q["step_cutbacks"] >= 1, "the too-large step was cut back")
+    check(q["load_factor"] == 1, "the run reached the target")
+    check(abs(q["displacement_tip_y"] - 200 / 3.141592653589793) < 1.0, "tip on the arc within 1 % of L")
+elif mode == "stop":
+    # A run that cannot converge stops with a message naming the load factor and the reason,
+    # exit code 3, and keeps the converged steps in curve.csv.
+    out = tempfile.mkdtemp(prefix="compliant-stop-")
+    cmd = ["mpirun", "-np", "2", solver_path(), os.path.join(cases, "verification", "rollup_2d.prm"),
+           "--set", "Output/Directory=" + out, "--set", "Output/Fields=false",
+           "--set", "Finite strain/Newton iterations=3", "--set", "Finite strain/Initial step=0.05",
+           "--set", "Finite strain/Minimum step=0.02"]
+    p = subprocess.run(cmd, capture_output=True, text=True, env=mpi_env())
+    print(p.stderr.strip()[-600:])
+    check(p.returncode == 3, "exit code 3 (got %d)" % p.returncode)
+    check("stopped at load factor" in p.stderr and "Newton did not converge" in p.stderr, "message says where and why")
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    check(summary["settings"]["status"].startswith("stopped at load factor"), "summary records the stop")
+    curve = open(os.path.join(out, "curve.csv")).read().splitlines()
+    steps = summary["quantities"]["load_steps"]
+    check(len(curve) == steps + 1, "every converged step kept in curve.csv (%d steps, %d lines)" % (steps, len(curve)))
+elif mode == "locking":
+    # Cook's membrane, plane strain, nu = 0.4999: displacement-only Q1 collapses, mixed does not.
+    case = os.path.join(cases, "verification", "cook_membrane_neo_hooke.prm")
+
+    def corner(degree, formulation, nu):
+        return run_case(case, ["Geometry/Parameters/n=8", "Discretization/Element degree=%d" % degree,
+                               "Finite strain/Formulation=" + formulation,
+                               "Material/Materials=*: steel, E=1.0985, nu=%g" % nu])["quantities"]["displacement_corner_y"]
+    q1 = corner(1, "displacement", 0.4999)
+    q1p0 = corner(1, "mixed", 0.4999)
+    q2p1 = corner(2, "mixed", 0.4999)
+    q2p1_compressible = corner(2, "mixed", 0.49)
+    print("nu=0.4999: Q1 %.4f  Q1-P0 %.4f  Q2-P1 %.4f;  Q2-P1 at nu=0.49: %.4f" % (q1, q1p0, q2p1, q2p1_compressible))
+    check(q1 < 0.5 * q2p1, "displacement-only Q1 locks (less than half of Q2-P1)")
+    check(abs(q1p0 / q2p1 - 1) < 0.05, "mixed Q1-P0 and Q2-P1 agree within 5 %")
+    check(abs(q2p1 / q2p1_compressible - 1) < 0.02, "mixed Q2-P1 barely changes from nu = 0.49 to 0.4999")
+sys.exit(1 if failed else 0)
