@@ -48,6 +48,12 @@ namespace compliant
                         "Largest increment; steps grow by 1.5 after easy convergence.");
       prm.declare_entry("Newton iterations", "25", Patterns::Integer(1),
                         "Newton iterations per step before the step is cut back.");
+      prm.declare_entry("Stability check", "true", Patterns::Bool(),
+                        "After each step, count the negative eigenvalues of the tangent "
+                        "stiffness (LDL^T inertia): when equilibrium turns unstable (limit point "
+                        "or bifurcation passed) the run stops and reports the load, instead of "
+                        "following an unstable path. Off automatically with follower pressure "
+                        "(non-symmetric tangent).");
       prm.declare_entry("Residual tolerance", "1e-9", Patterns::Double(0, 1),
                         "Newton converges when the residual is below this fraction of the "
                         "internal force norm.");
@@ -71,6 +77,8 @@ namespace compliant
       settings.follower_pressure     = prm.get("Follower pressure");
       settings.max_newton_iterations = prm.get_integer("Newton iterations");
       settings.residual_tolerance    = prm.get_double("Residual tolerance");
+      const bool stability_check     = prm.get_bool("Stability check") &&
+                                   settings.follower_pressure.empty();
       stepping.initial_step          = prm.get_double("Initial step");
       stepping.minimum_step          = prm.get_double("Minimum step");
       stepping.maximum_step          = prm.get_double("Maximum step");
@@ -111,14 +119,52 @@ namespace compliant
       double       step = stepping.initial_step, total_newton = 0;
       unsigned int n_steps = 0, n_cutbacks = 0;
       std::string  failure;
+      double       summary_limit_load_factor = -1;
+      double       previous_rate = 0;      // |du| / d(load factor) of the last accepted step
+      const double jump_factor   = 3;
       Quantities   quantities;
       while (problem.load_factor < 1 - 1e-12)
         {
           const double target = std::min(1.0, problem.load_factor + step);
           try
             {
-              const auto report = problem.solve_to(target);
+              const double previous = problem.load_factor;
+              const dealii::PETScWrappers::MPI::Vector previous_state = problem.solution;
+              const auto   report   = problem.solve_to(target);
+              // A converged step whose displacement change per load increment is many times
+              // the previous step's has jumped to a distant equilibrium (snap-through past a
+              // limit point): reject it, so that cutting back finds the limit instead.
+              {
+                dealii::PETScWrappers::MPI::Vector change(problem.locally_owned_dofs, comm);
+                change = problem.solution;
+                change.add(-1, previous_state);
+                const double rate = change.l2_norm() / (target - previous);
+                if (previous_rate > 0 && rate > jump_factor * previous_rate)
+                  {
+                    problem.restore(previous_state, previous);
+                    throw StepFailure("the displacement jumped " + std::to_string(rate / previous_rate) +
+                                      " times faster than in the previous step (snap-through "
+                                      "past a limit point?)");
+                  }
+                previous_rate = rate;
+              }
               ++n_steps;
+              if (stability_check)
+                {
+                  const unsigned int unstable = problem.unstable_modes();
+                  if (unstable > 0)
+                    {
+                      std::ostringstream message;
+                      message << "equilibrium turned unstable between load factors " << previous
+                              << " and " << target << ": the tangent stiffness has " << unstable
+                              << " negative eigenvalue(s) (limit point or bifurcation). Load "
+                              << "control cannot follow it; the last stable load factor is "
+                              << previous << ". Drive the structure by a prescribed "
+                              << "displacement to follow it past the limit point";
+                      failure = message.str();
+                      summary_limit_load_factor = previous;
+                    }
+                }
               total_newton += report.iterations;
               quantities = compute_quantities(problem);
               // Derived quantities per step too, so curves can hold e.g. a link angle.
@@ -158,6 +204,8 @@ namespace compliant
                     curve << "," << quantities[k];
                   curve << std::endl;
                 }
+              if (!failure.empty())
+                break;
               if (report.iterations <= 6)
                 step = std::min(stepping.maximum_step, 1.5 * step);
             }
@@ -200,6 +248,8 @@ namespace compliant
       summary.quantities["load_steps"]        = n_steps;
       summary.quantities["step_cutbacks"]     = n_cutbacks;
       summary.quantities["newton_iterations"] = total_newton;
+      if (summary_limit_load_factor >= 0)
+        summary.quantities["last_stable_load_factor"] = summary_limit_load_factor;
       summary.quantities["time_total"]        = timer.wall_time();
       finish_run(context, summary, problem.expression_variables(),
                  [&](const std::string &directory) { write_fields(problem, directory); });

@@ -510,6 +510,19 @@ namespace compliant
   }
 
   template <int dim>
+  unsigned int FiniteStrainProblem<dim>::unstable_modes() const
+  {
+    const auto                 homogeneous = make_constraints(load_factor, true, solution);
+    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator);
+    assemble(solution, load_factor, &homogeneous, true, rhs);
+    const unsigned int negative = count_negative_eigenvalues(tangent);
+    // K_pp = -M/lambda is negative definite: inertia(K) = inertia(K_pp) + inertia(Schur complement)
+    const auto per_component = DoFTools::count_dofs_per_fe_component(dof_handler);
+    const unsigned int n_pressure = mixed ? per_component.back() : 0;
+    return negative > n_pressure ? negative - n_pressure : 0;
+  }
+
+  template <int dim>
   double FiniteStrainProblem<dim>::tangent_consistency(const PETScWrappers::MPI::Vector &u,
                                                        const PETScWrappers::MPI::Vector &v,
                                                        const double lambda, const double h) const

@@ -73,6 +73,19 @@ namespace compliant
     double von_mises(const dealii::SymmetricTensor<2, dim> &stress, double sigma_zz) const;
     double energy_density(const dealii::Tensor<2, dim> &grad_u, const Material &material) const;
 
+    // Returns to an earlier converged state (a step the analysis rejects after the fact).
+    void restore(const dealii::PETScWrappers::MPI::Vector &state, double state_load_factor)
+    {
+      solution    = state;
+      load_factor = state_load_factor;
+    }
+
+    // Negative eigenvalues of the condensed tangent stiffness at the current state (0: stable
+    // equilibrium under the applied loads; a limit point or bifurcation has been passed
+    // otherwise). Mixed formulations: the pressure block's own negative eigenvalues are removed
+    // by Sylvester's law of inertia. Needs a symmetric tangent (no follower pressure).
+    unsigned int unstable_modes() const;
+
     // Check of the consistent tangent: |K v - (R(u + h v) - R(u - h v)) / 2h| / |K v| at the
     // state u (unconstrained; meant for problems without Dirichlet conditions).
     double tangent_consistency(const dealii::PETScWrappers::MPI::Vector &u,

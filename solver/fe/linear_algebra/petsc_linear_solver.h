@@ -24,4 +24,7 @@ namespace compliant
                                    const dealii::PETScWrappers::MPI::Vector              &rhs,
                                    std::vector<dealii::PETScWrappers::MPI::Vector>       near_null_space,
                                    const LinearSolverSettings                            &settings);
+  // Number of negative eigenvalues of a symmetric matrix: the inertia of its LDL^T factor
+  // (Sylvester's law), from MUMPS. Throws std::runtime_error if PETSc cannot give it.
+  unsigned int count_negative_eigenvalues(dealii::PETScWrappers::MPI::SparseMatrix &matrix);
 } // namespace compliant
