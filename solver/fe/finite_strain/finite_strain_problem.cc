@@ -120,8 +120,8 @@ namespace compliant
     materials = assign_materials(parameters.materials, geometry.material_ids, parameters.unit_system);
     for (const auto &[id, material] : materials)
       laws.emplace(id, HyperelasticLaw(settings.law, material, settings.mooney_rivlin_ratio));
-    if (mixed && settings.law == "Saint Venant-Kirchhoff")
-      throw std::invalid_argument("Finite strain/Formulation: the mixed formulation needs a "
+    if (mixed && !laws.begin()->second.supports_mixed())
+      throw std::invalid_argument("Finite strain/Formulation: the mixed formulation needs the "
                                   "neo-Hookean or Mooney-Rivlin law");
     boundary_conditions = resolve_boundary_conditions<dim>(parameters, geometry.boundary_ids);
     if (!boundary_conditions.total_forces.empty())

@@ -10,6 +10,7 @@ namespace compliant
   HyperelasticLaw::HyperelasticLaw(const std::string &kind, const Material &material,
                                    const double mooney_rivlin_ratio)
     : svk(kind == "Saint Venant-Kirchhoff")
+    , isochoric(kind == "neo-Hookean isochoric")
   {
     mu                  = material.shear_modulus();
     lambda_small_strain = material.lame_lambda();
@@ -70,6 +71,22 @@ namespace compliant
     const SymmetricTensor<2, dim> C   = I + 2 * E;
     const auto                    Ci  = invert(C);
     const auto                    IC  = inverse_product(Ci);
+    if (isochoric)
+      {
+        const double kappa = lambda_small_strain + 2 * mu / 3;
+        const double I1    = trace(C) + (dim == 2 ? 1.0 : 0.0); // C33 = 1 in plane strain
+        const double Jm23  = std::exp(-2.0 / 3.0 * r.log_J);
+        const double J2m1  = std::expm1(2 * r.log_J); // J^2 - 1 without cancellation
+        r.S = mu * Jm23 * (I - I1 / 3 * Ci) + 0.5 * kappa * J2m1 * Ci;
+        r.tangent = 2 * mu * Jm23 *
+                      (-1.0 / 3 * outer_product(I, Ci) - 1.0 / 3 * outer_product(Ci, I) +
+                       I1 / 9 * outer_product(Ci, Ci) + I1 / 3 * IC) +
+                    kappa * (J2m1 + 1) * outer_product(Ci, Ci) - kappa * J2m1 * IC;
+        r.energy = 0.5 * mu * (Jm23 * I1 - 3) + 0.25 * kappa * (J2m1 - 2 * r.log_J);
+        if (dim == 2)
+          r.S33 = mu * Jm23 * (1 - I1 / 3) + 0.5 * kappa * J2m1;
+        return r;
+      }
     const double                  a   = 2 * (c1 + 2 * c2);
     // I - C^-1 = 2 C^-1 E, symmetric in exact arithmetic
     const SymmetricTensor<2, dim> I_minus_Ci = symmetrize(2 * (Tensor<2, dim>(Ci) * Tensor<2, dim>(E)));

@@ -8,6 +8,8 @@
 // of (E, nu); c2 = 0 is the compressible neo-Hookean law. For the mixed u-p formulation the
 // volumetric term lambda/2 (ln J)^2 is replaced by p ln J - p^2/(2 lambda).
 // Saint Venant-Kirchhoff: W = lambda/2 (tr E)^2 + mu E:E.
+// Neo-Hookean with isochoric split (the deal.II code gallery's compressible Cook's membrane):
+//   W = mu/2 (J^(-2/3) I1 - 3) + kappa/4 (J^2 - 1 - 2 ln J), kappa = lambda + 2 mu/3.
 #pragma once
 
 #include <deal.II/base/symmetric_tensor.h>
@@ -31,7 +33,8 @@ namespace compliant
   class HyperelasticLaw
   {
   public:
-    // kind: "neo-Hookean", "Mooney-Rivlin", "Saint Venant-Kirchhoff". mooney_rivlin_ratio =
+    // kind: "neo-Hookean", "neo-Hookean isochoric", "Mooney-Rivlin", "Saint Venant-Kirchhoff".
+    // mooney_rivlin_ratio =
     // c2 / (c1 + c2) in [0, 1).
     HyperelasticLaw(const std::string &kind, const Material &material, double mooney_rivlin_ratio);
 
@@ -44,9 +47,10 @@ namespace compliant
 
     double lambda() const { return lambda_volumetric; }
     bool   is_saint_venant_kirchhoff() const { return svk; }
+    bool   supports_mixed() const { return !svk && !isochoric; }
 
   private:
-    bool   svk;
+    bool   svk, isochoric;
     double c1, c2, lambda_volumetric, mu, lambda_small_strain;
   };
 } // namespace compliant
