@@ -1,7 +1,6 @@
-// Set-up of a structure that may have no supports at all (free-free modal analysis).
+// Set-up of a structure that may have no supports at all (free-free modal analysis):
 // LinearElasticProblem<dim>::setup() rejects such a case because a static solve would be
-// singular; this mirrors it step by step without that check. Keep the two in step (or give
-// setup() an option and drop this file).
+// singular, so this stops after setup_discretization().
 #pragma once
 
 #include "elasticity/linear_elastic_problem.h"

@@ -42,6 +42,23 @@ namespace compliant
   void LinearElasticProblem<dim>::setup()
   {
     Timer timer;
+    setup_discretization();
+    if (boundary_conditions.clamped.empty() && boundary_conditions.displacements.empty() &&
+        boundary_conditions.rotations.empty())
+      throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
+                                  "a linear static solve needs the rigid-body motion constrained");
+    make_constraints();
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator,
+                                               locally_relevant_dofs);
+    system_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+    statistics.setup_seconds = timer.wall_time();
+  }
+
+  template <int dim>
+  void LinearElasticProblem<dim>::setup_discretization()
+  {
     if (geometry.dimension != dim)
       throw std::invalid_argument("Model = " + parameters.model + " needs a " +
                                   std::to_string(dim) + "D mesh, but '" + parameters.mesh_file +
@@ -72,25 +89,17 @@ namespace compliant
     materials           = assign_materials(parameters.materials, geometry.material_ids,
                                            parameters.unit_system);
     boundary_conditions = resolve_boundary_conditions<dim>(parameters, geometry.boundary_ids);
-    if (boundary_conditions.clamped.empty() && boundary_conditions.displacements.empty() &&
-        boundary_conditions.rotations.empty())
-      throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
-                                  "a linear static solve needs the rigid-body motion constrained");
 
     dof_handler.distribute_dofs(*fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
-    make_constraints();
-
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator,
-                                               locally_relevant_dofs);
-    system_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.close();
     system_rhs.reinit(locally_owned_dofs, communicator);
     external_forces.reinit(locally_owned_dofs, communicator);
     solution.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
-    statistics.setup_seconds = timer.wall_time();
   }
 
   template <int dim>

@@ -39,6 +39,9 @@ namespace compliant
     // Builds mesh, DoFs and constraints; every case-file name is checked here, before any
     // work or output (throws std::invalid_argument).
     void setup();
+    // The part of setup() that needs no supports: mesh, elements, materials, conditions, DoFs,
+    // vectors, hanging-node constraints only (a free-free modal analysis starts from here).
+    void setup_discretization();
     void assemble();
     void solve();
 
