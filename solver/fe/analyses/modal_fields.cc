@@ -1,4 +1,5 @@
 #include "analyses/modal_fields.h"
+#include "output/field_writer.h"
 
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
@@ -58,35 +59,7 @@ namespace compliant
                                  std::vector<std::string>(dim, "mode_" + std::to_string(m + 1)),
                                  DataOut<dim>::type_dof_data, interpretation);
       }
-    Vector<float> material_id(problem.triangulation.n_active_cells());
-    Vector<float> partition(problem.triangulation.n_active_cells());
-    for (const auto &cell : problem.triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          material_id(cell->active_cell_index()) = cell->material_id();
-          partition(cell->active_cell_index())   = cell->subdomain_id();
-        }
-    data_out.add_data_vector(material_id, "material_id");
-    data_out.add_data_vector(partition, "partition");
-    const bool hypercube = problem.triangulation.all_reference_cells_are_hyper_cube();
-    data_out.build_patches(*problem.mapping, hypercube ? problem.parameters.element_degree : 1);
-
-    DataOutBase::DataOutFilter filter(DataOutBase::DataOutFilterFlags(true, true));
-    data_out.write_filtered_data(filter);
-    const std::string h5      = "fields.h5";
-    const std::string partial = directory + "/" + h5 + ".partial";
-    data_out.write_hdf5_parallel(filter, partial, problem.communicator);
-    std::vector<XDMFEntry> entries{data_out.create_xdmf_entry(filter, h5, 0., problem.communicator)};
-    const std::string      xdmf = directory + "/fields.xdmf";
-    data_out.write_xdmf_file(entries, xdmf + ".partial", problem.communicator);
-    MPI_Barrier(problem.communicator);
-    if (Utilities::MPI::this_mpi_process(problem.communicator) == 0)
-      {
-        std::rename(partial.c_str(), (directory + "/" + h5).c_str());
-        std::rename((xdmf + ".partial").c_str(), xdmf.c_str());
-      }
-    MPI_Barrier(problem.communicator);
-    return xdmf;
+    return write_field_files(data_out, problem, directory);
   }
 
   template std::string write_mode_shapes<2>(const LinearElasticProblem<2> &,

@@ -16,6 +16,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include "elasticity/rigid_rotation.h"
+#include "elasticity/von_mises.h"
 #include "mesh/mesh_reader.h"
 #include "linear_algebra/petsc_linear_solver.h"
 
@@ -183,16 +184,9 @@ namespace compliant
   }
 
   template <int dim>
-  double LinearElasticProblem<dim>::von_mises(const SymmetricTensor<2, dim> &s, double sigma_zz) const
+  double LinearElasticProblem<dim>::von_mises(const SymmetricTensor<2, dim> &s, const double sigma_zz) const
   {
-    // Full 3x3 stress; in 2D the out-of-plane shear stresses vanish.
-    double s3[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, sigma_zz}};
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        s3[i][j] = s[i][j];
-    const double a = s3[0][0] - s3[1][1], b = s3[1][1] - s3[2][2], c = s3[2][2] - s3[0][0];
-    return std::sqrt(0.5 * (a * a + b * b + c * c) +
-                     3 * (s3[0][1] * s3[0][1] + s3[1][2] * s3[1][2] + s3[0][2] * s3[0][2]));
+    return von_mises_stress(s, sigma_zz);
   }
 
   template <int dim>

@@ -12,6 +12,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include "elasticity/rigid_rotation.h"
+#include "elasticity/von_mises.h"
 #include "input/spec_list.h"
 #include "linear_algebra/petsc_linear_solver.h"
 #include "mesh/mesh_reader.h"
@@ -567,13 +568,7 @@ namespace compliant
   template <int dim>
   double FiniteStrainProblem<dim>::von_mises(const SymmetricTensor<2, dim> &s, const double sigma_zz) const
   {
-    double s3[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, sigma_zz}};
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        s3[i][j] = s[i][j];
-    const double a = s3[0][0] - s3[1][1], b = s3[1][1] - s3[2][2], c = s3[2][2] - s3[0][0];
-    return std::sqrt(0.5 * (a * a + b * b + c * c) +
-                     3 * (s3[0][1] * s3[0][1] + s3[1][2] * s3[1][2] + s3[0][2] * s3[0][2]));
+    return von_mises_stress(s, sigma_zz);
   }
 
   template <int dim>

@@ -1,4 +1,5 @@
 #include "output/field_output.h"
+#include "output/field_writer.h"
 
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
@@ -80,23 +81,9 @@ namespace compliant
   } // namespace
 
   template <class Problem>
-  std::string write_fields(const Problem &problem, const std::string &directory)
+  std::string write_field_files(DataOut<Problem::dimension> &data_out, const Problem &problem,
+                                const std::string &directory)
   {
-    constexpr int  dim = Problem::dimension;
-    DataOut<dim> data_out;
-    data_out.attach_dof_handler(problem.dof_handler);
-    std::vector<std::string> names(dim, "displacement");
-    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
-      dim, DataComponentInterpretation::component_is_part_of_vector);
-    if (problem.fe->n_components() > dim)
-      {
-        names.emplace_back("pressure");
-        interpretation.push_back(DataComponentInterpretation::component_is_scalar);
-      }
-    data_out.add_data_vector(problem.solution, names, DataOut<dim>::type_dof_data, interpretation);
-    StressPostprocessor<Problem> stress(problem);
-    data_out.add_data_vector(problem.solution, stress);
-
     Vector<float> material_id(problem.triangulation.n_active_cells());
     Vector<float> partition(problem.triangulation.n_active_cells());
     for (const auto &cell : problem.triangulation.active_cell_iterators())
@@ -130,6 +117,29 @@ namespace compliant
     return xdmf;
   }
 
+  template <class Problem>
+  std::string write_fields(const Problem &problem, const std::string &directory)
+  {
+    constexpr int  dim = Problem::dimension;
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(problem.dof_handler);
+    std::vector<std::string> names(dim, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+      dim, DataComponentInterpretation::component_is_part_of_vector);
+    if (problem.fe->n_components() > dim)
+      {
+        names.emplace_back("pressure");
+        interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+      }
+    data_out.add_data_vector(problem.solution, names, DataOut<dim>::type_dof_data, interpretation);
+    StressPostprocessor<Problem> stress(problem);
+    data_out.add_data_vector(problem.solution, stress);
+
+    return write_field_files(data_out, problem, directory);
+  }
+
+  template std::string write_field_files(DataOut<2> &, const LinearElasticProblem<2> &, const std::string &);
+  template std::string write_field_files(DataOut<3> &, const LinearElasticProblem<3> &, const std::string &);
   template std::string write_fields(const LinearElasticProblem<2> &, const std::string &);
   template std::string write_fields(const LinearElasticProblem<3> &, const std::string &);
   template std::string write_fields(const FiniteStrainProblem<2> &, const std::string &);
