@@ -28,6 +28,35 @@ namespace compliant
     throw InputError("unknown analysis '" + name + "'");
   }
 
+  bool report_mesh_and_stop_if_check(const RunContext &context, const unsigned int n_cells,
+                                     const std::size_t n_dofs, const std::string &description)
+  {
+    const auto &p    = context.parameters;
+    const bool  root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
+    if (root)
+      std::cout << "Mesh: " << n_cells << " cells, " << n_dofs << " DoFs (degree "
+                << p.element_degree << ", " << p.model << description << ") on "
+                << dealii::Utilities::MPI::n_mpi_processes(context.communicator) << " ranks"
+                << std::endl;
+    if (context.check_only && root)
+      std::cout << "Case '" << p.case_file << "' is valid." << std::endl;
+    return context.check_only;
+  }
+
+  RunSummary start_summary(const RunContext &context, const bool hypercube_cells)
+  {
+    const auto &p = context.parameters;
+    RunSummary  summary;
+    summary.case_file  = p.case_file;
+    summary.settings   = {{"analysis", p.analysis},
+                        {"model", p.model},
+                        {"mesh_file", p.mesh_file},
+                        {"element_degree", std::to_string(p.element_degree)},
+                        {"cell_type", hypercube_cells ? "hypercube" : "simplex"}};
+    summary.parameters = p.geometry_parameters;
+    return summary;
+  }
+
   void finish_run(const RunContext &context, RunSummary &summary,
                   const std::map<std::string, double>            &variables,
                   const std::function<void(const std::string &)> &write_fields)

@@ -38,6 +38,14 @@ namespace compliant
   const std::vector<Analysis> &analyses();
   const Analysis              &find_analysis(const std::string &name);
 
+  // Prints the mesh line ("Mesh: N cells, M DoFs (<description>) on R ranks"); with --check also
+  // that the case is valid, and returns true: the caller stops there.
+  bool report_mesh_and_stop_if_check(const RunContext &context, unsigned int n_cells,
+                                     std::size_t n_dofs, const std::string &description);
+
+  // A summary with the settings every analysis records (analysis, model, mesh, degree, cells).
+  RunSummary start_summary(const RunContext &context, bool hypercube_cells);
+
   // Shared end of a run: derived quantities, closed-form comparisons, fields, summary, table.
   // Everything that can fail on user input happens before the first file is written.
   void finish_run(const RunContext &context, RunSummary &summary,

@@ -35,17 +35,9 @@ namespace compliant
         {
           throw InputError("case file '" + p.case_file + "': " + e.what());
         }
-      if (root)
-        std::cout << "Mesh: " << problem.triangulation.n_active_cells() << " cells, "
-                  << problem.dof_handler.n_dofs() << " DoFs (degree " << p.element_degree << ", "
-                  << p.model << ") on " << dealii::Utilities::MPI::n_mpi_processes(comm)
-                  << " ranks" << std::endl;
-      if (context.check_only)
-        {
-          if (root)
-            std::cout << "Case '" << p.case_file << "' is valid." << std::endl;
-          return 0;
-        }
+      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_active_cells(),
+                                        problem.dof_handler.n_dofs(), ""))
+        return 0;
 
       install_constraints(problem, std::move(constraints));
       problem.assemble();
@@ -55,17 +47,10 @@ namespace compliant
                   << p.solver_method << "), assembly " << problem.statistics.assembly_seconds
                   << " s, solve " << problem.statistics.solve_seconds << " s" << std::endl;
 
-      RunSummary summary;
-      summary.case_file  = p.case_file;
-      summary.settings   = {{"analysis", p.analysis},
-                          {"model", p.model},
-                          {"mesh_file", p.mesh_file},
-                          {"element_degree", std::to_string(p.element_degree)},
-                          {"cell_type", problem.triangulation.all_reference_cells_are_hyper_cube() ?
-                                          "hypercube" : "simplex"},
-                          {"solver", p.solver_method},
-                          {"joints", "frictionless pins (radial ties)"}};
-      summary.parameters = p.geometry_parameters;
+      RunSummary summary =
+        start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
+      summary.settings.insert({"solver", p.solver_method});
+      summary.settings.insert({"joints", "frictionless pins (radial ties)"});
       summary.quantities = compute_quantities(problem);
       summary.quantities["time_setup"]    = problem.statistics.setup_seconds;
       summary.quantities["time_assembly"] = problem.statistics.assembly_seconds;

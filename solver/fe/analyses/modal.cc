@@ -111,17 +111,9 @@ namespace compliant
         throw InputError("case file '" + p.case_file + "': Modal/Number of modes = " +
                          std::to_string(settings.n_modes) + " is too many for " +
                          std::to_string(problem.dof_handler.n_dofs()) + " DoFs");
-      if (root)
-        std::cout << "Mesh: " << problem.triangulation.n_active_cells() << " cells, "
-                  << problem.dof_handler.n_dofs() << " DoFs (degree " << p.element_degree << ", "
-                  << p.model << ") on " << dealii::Utilities::MPI::n_mpi_processes(comm)
-                  << " ranks" << (supported ? "" : ", no supports (free)") << std::endl;
-      if (context.check_only)
-        {
-          if (root)
-            std::cout << "Case '" << p.case_file << "' is valid." << std::endl;
-          return 0;
-        }
+      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_active_cells(),
+                                        problem.dof_handler.n_dofs(), supported ? "" : ", no supports (free)"))
+        return 0;
 
       const auto sparsity = install_constraints(problem, std::move(constraints));
       problem.assemble(); // the stiffness; the load vector is not used
@@ -148,18 +140,11 @@ namespace compliant
         solve_eigenproblem(problem.system_matrix, mass, problem.locally_owned_dofs, eigen);
       const double eigen_seconds = eigen_timer.wall_time();
 
-      RunSummary summary;
-      summary.case_file  = p.case_file;
-      summary.settings   = {{"analysis", p.analysis},
-                          {"model", p.model},
-                          {"mesh_file", p.mesh_file},
-                          {"element_degree", std::to_string(p.element_degree)},
-                          {"cell_type", problem.triangulation.all_reference_cells_are_hyper_cube() ?
-                                          "hypercube" : "simplex"},
-                          {"eigensolver", "SLEPc Krylov-Schur, shift-and-invert, MUMPS"},
-                          {"mass_matrix", "consistent"},
-                          {"supports", supported ? "Dirichlet boundaries held fixed" : "none (free)"}};
-      summary.parameters = p.geometry_parameters;
+      RunSummary summary =
+        start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
+      summary.settings.insert({"eigensolver", "SLEPc Krylov-Schur, shift-and-invert, MUMPS"});
+      summary.settings.insert({"mass_matrix", "consistent"});
+      summary.settings.insert({"supports", supported ? "Dirichlet boundaries held fixed" : "none (free)"});
       auto &q            = summary.quantities;
       q["n_dofs"]        = problem.dof_handler.n_dofs();
       q["n_cells"]       = problem.triangulation.n_active_cells();

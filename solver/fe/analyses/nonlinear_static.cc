@@ -97,18 +97,9 @@ namespace compliant
         {
           throw InputError("case file '" + p.case_file + "': " + e.what());
         }
-      if (root)
-        std::cout << "Mesh: " << problem.triangulation.n_active_cells() << " cells, "
-                  << problem.dof_handler.n_dofs() << " DoFs (degree " << p.element_degree << ", "
-                  << p.model << ", " << settings.law << ", "
-                  << (settings.mixed ? "mixed u-p" : "displacement") << ") on "
-                  << dealii::Utilities::MPI::n_mpi_processes(comm) << " ranks" << std::endl;
-      if (context.check_only)
-        {
-          if (root)
-            std::cout << "Case '" << p.case_file << "' is valid." << std::endl;
-          return 0;
-        }
+      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_active_cells(),
+                                        problem.dof_handler.n_dofs(), ", " + settings.law + (settings.mixed ? ", mixed u-p" : ", displacement")))
+        return 0;
 
       // The response curve is written step by step: a run that stops keeps its converged steps.
       if (root)
@@ -233,17 +224,12 @@ namespace compliant
       if (root && columns.empty()) // no step converged: the curve still says what it would hold
         std::ofstream(curve_file) << "step,load_factor,newton_iterations\n";
 
-      RunSummary summary;
-      summary.case_file  = p.case_file;
-      summary.settings   = {{"analysis", p.analysis},
-                          {"model", p.model},
-                          {"mesh_file", p.mesh_file},
-                          {"element_degree", std::to_string(p.element_degree)},
-                          {"law", settings.law},
-                          {"formulation", settings.mixed ? "mixed" : "displacement"},
-                          {"status", failure.empty() ? "completed" : failure},
-                          {"curve", curve_file}};
-      summary.parameters = p.geometry_parameters;
+      RunSummary summary =
+        start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
+      summary.settings.insert({"law", settings.law});
+      summary.settings.insert({"formulation", settings.mixed ? "mixed" : "displacement"});
+      summary.settings.insert({"status", failure.empty() ? "completed" : failure});
+      summary.settings.insert({"curve", curve_file});
       summary.quantities = quantities;
       summary.quantities["load_factor"]       = problem.load_factor;
       summary.quantities["load_steps"]        = n_steps;
