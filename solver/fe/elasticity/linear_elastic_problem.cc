@@ -390,13 +390,8 @@ namespace compliant
   template <int dim>
   std::map<std::string, double> LinearElasticProblem<dim>::expression_variables() const
   {
-    auto            variables = parameters.geometry_parameters;
-    const Material &first     = materials.begin()->second;
-    variables["thickness"]    = thickness;
-    variables["E"]            = first.youngs_modulus;
-    variables["nu"]           = first.poissons_ratio;
-    variables["G"]            = first.shear_modulus();
-    return variables;
+    return compliant::expression_variables(parameters.geometry_parameters,
+                                           materials.begin()->second, thickness);
   }
 
   template class LinearElasticProblem<2>;

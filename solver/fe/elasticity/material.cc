@@ -132,6 +132,17 @@ namespace compliant
     return result;
   }
 
+  std::map<std::string, double> expression_variables(const std::map<std::string, double> &geometry_parameters,
+                                                     const Material &material, const double thickness)
+  {
+    auto variables         = geometry_parameters;
+    variables["thickness"] = thickness;
+    variables["E"]         = material.youngs_modulus;
+    variables["nu"]        = material.poissons_ratio;
+    variables["G"]         = material.shear_modulus();
+    return variables;
+  }
+
   std::string material_library_documentation()
   {
     std::ostringstream out;

@@ -35,4 +35,9 @@ namespace compliant
                                            const std::string                &unit_system);
 
   std::string material_library_documentation();
+
+  // Names usable in Derived and Checks expressions: the geometry parameters, the thickness and
+  // E, nu, G of the given material.
+  std::map<std::string, double> expression_variables(const std::map<std::string, double> &geometry_parameters,
+                                                     const Material &material, double thickness);
 } // namespace compliant

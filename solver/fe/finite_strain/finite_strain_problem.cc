@@ -591,13 +591,9 @@ namespace compliant
   template <int dim>
   std::map<std::string, double> FiniteStrainProblem<dim>::expression_variables() const
   {
-    auto            variables = parameters.geometry_parameters;
-    const Material &first     = materials.begin()->second;
-    variables["thickness"]    = thickness;
-    variables["E"]            = first.youngs_modulus;
-    variables["nu"]           = first.poissons_ratio;
-    variables["G"]            = first.shear_modulus();
-    variables["load_factor"]  = load_factor;
+    auto variables = compliant::expression_variables(parameters.geometry_parameters,
+                                                     materials.begin()->second, thickness);
+    variables["load_factor"] = load_factor;
     return variables;
   }
 

@@ -185,6 +185,13 @@ namespace compliant
     return cl;
   }
 
+  std::string default_output_directory(const std::string &case_file, const std::string &prefix)
+  {
+    auto stem = case_file.substr(case_file.rfind('/') + 1);
+    stem      = stem.substr(0, stem.rfind('.'));
+    return "results/" + prefix + stem;
+  }
+
   std::string resolve_mesh_file(const std::string &name, const std::string &case_file)
   {
     if (name.empty())
@@ -368,11 +375,7 @@ namespace compliant
     p.write_fields     = prm.get_bool("Fields");
     prm.leave_subsection();
     if (p.output_directory.empty())
-      {
-        auto stem        = p.case_file.substr(p.case_file.rfind('/') + 1);
-        stem             = stem.substr(0, stem.rfind('.'));
-        p.output_directory = "results/" + stem;
-      }
+      p.output_directory = default_output_directory(p.case_file);
     return p;
   }
 } // namespace compliant

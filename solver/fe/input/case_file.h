@@ -84,6 +84,10 @@ namespace compliant
   // applies --set overrides and validates values. Throws InputError naming file and entry.
   CaseParameters read_case(const CommandLine &command_line, dealii::ParameterHandler &prm);
 
+  // results/<prefix><case file name without extension>: where a case writes when Output/Directory
+  // is empty.
+  std::string default_output_directory(const std::string &case_file, const std::string &prefix = "");
+
   // Where a mesh file named in a case is looked for: next to the case, then meshes/.
   std::string resolve_mesh_file(const std::string &name, const std::string &case_file);
 } // namespace compliant

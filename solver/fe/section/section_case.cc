@@ -139,11 +139,7 @@ namespace compliant::section
     c.write_fields     = prm.get_bool("Fields");
     prm.leave_subsection();
     if (c.output_directory.empty())
-      {
-        auto stem          = c.case_file.substr(c.case_file.rfind('/') + 1);
-        stem               = stem.substr(0, stem.rfind('.'));
-        c.output_directory = "results/section/" + stem;
-      }
+      c.output_directory = default_output_directory(c.case_file, "section/");
     return c;
   }
 } // namespace compliant::section
