@@ -68,5 +68,9 @@ bad("missing mesh file", [case, "--set", "Geometry/Mesh file=nothing.geo"], ["no
 bad("unknown closed form", [case, "--set", "Comparison/Checks=rotational_stiffness_drive ~ prbm_pivot(E=E)"], ["prbm_pivot", "Comparison/Checks"])
 bad("bad expression", [case, "--set", "Boundary conditions/Rotation=drive: degrees=1, center=q/2 0"], ["center", "q/2"])
 bad("point outside the mesh", [case, "--set", "Quantities/Points=far: 1000 0"], ["far", "outside"])
+bad("plane stress with the mixed formulation", [case, "--set", "Analysis=nonlinear static", "--set", "Model=plane stress",
+    "--set", "Finite strain/Formulation=mixed"], ["Formulation", "plane stress"])
+bad("plane stress with a follower pressure", [case, "--set", "Analysis=nonlinear static", "--set", "Model=plane stress",
+    "--set", "Finite strain/Follower pressure=drive: 1"], ["Follower pressure", "plane stress"])
 bad("missing case file", [os.path.join(root, "cases", "no_such_case.prm")], ["no_such_case.prm"])
 sys.exit(1 if failed else 0)

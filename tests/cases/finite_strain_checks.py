@@ -65,7 +65,7 @@ elif mode == "locking":
     case = os.path.join(cases, "verification", "cook_membrane_neo_hooke.prm")
 
     def corner(degree, formulation, nu):
-        return run_case(case, ["Geometry/Parameters/n=8", "Discretization/Element degree=%d" % degree,
+        return run_case(case, ["Model=plane strain", "Finite strain/Law=neo-Hookean", "Geometry/Parameters/n=8", "Discretization/Element degree=%d" % degree,
                                "Finite strain/Formulation=" + formulation,
                                "Material/Materials=*: steel, E=1.0985, nu=%g" % nu])["quantities"]["displacement_corner_y"]
     q1 = corner(1, "displacement", 0.4999)

@@ -92,7 +92,19 @@ namespace compliant
     , dof_handler(triangulation)
     , thickness(dim == 2 ? parameters.thickness : 1.0)
     , mixed(settings.mixed)
+    , plane_stress(dim == 2 && parameters.model == "plane stress")
   {}
+
+  template <int dim>
+  StressResponse<dim> FiniteStrainProblem<dim>::material_response(const HyperelasticLaw &law,
+                                                                  const SymmetricTensor<2, dim> &E,
+                                                                  const double pressure) const
+  {
+    if constexpr (dim == 2)
+      if (plane_stress)
+        return law.plane_stress_response(E);
+    return law.response(E, mixed, pressure);
+  }
 
   template <int dim>
   void FiniteStrainProblem<dim>::setup()
@@ -101,10 +113,9 @@ namespace compliant
       throw std::invalid_argument("Model = " + parameters.model + " needs a " +
                                   std::to_string(dim) + "D mesh, but '" + parameters.mesh_file +
                                   "' is " + std::to_string(geometry.dimension) + "D");
-    if (dim == 2 && parameters.model != "plane strain")
-      throw std::invalid_argument("Model: finite strain in 2D is plane strain only (plane stress "
-                                  "needs the thickness stretch as an unknown); got '" +
-                                  parameters.model + "'");
+    if (plane_stress && mixed)
+      throw std::invalid_argument("Finite strain/Formulation: plane stress is displacement-only "
+                                  "(the thickness strain takes up the volume change, nothing locks)");
     create_triangulation(triangulation, geometry, parameters.global_refinements);
     if (!triangulation.all_reference_cells_are_hyper_cube())
       throw std::invalid_argument("Finite strain: the mesh must be quadrilaterals/hexahedra");
@@ -136,6 +147,9 @@ namespace compliant
         follower_pressures[boundary_id_of(item.name, geometry.boundary_ids,
                                           "Finite strain/Follower pressure")] = {item.fields[0].value};
       }
+    if (plane_stress && !follower_pressures.empty())
+      throw std::invalid_argument("Finite strain/Follower pressure: not available in plane stress "
+                                  "(the loaded area would follow the thickness stretch); use 3d");
     for (const auto &[id, expressions] : boundary_conditions.traction_fields)
       make_parser<dim>(expressions, parameters.geometry_parameters, "Loads/Traction");
     for (const auto &[id, expressions] : follower_pressures)
@@ -285,7 +299,7 @@ namespace compliant
                   break;
                 }
               const auto   E        = green_lagrange(grad_u[q]);
-              const auto   response = law.response(E, mixed, mixed ? p_values[q] : 0.0);
+              const auto   response = material_response(law, E, mixed ? p_values[q] : 0.0);
               const double JxW      = fe_values.JxW(q) * thickness;
               const auto   Ci       = invert(unit_symmetric_tensor<dim>() + 2 * E);
               for (unsigned int i = 0; i < n; ++i)
@@ -559,9 +573,10 @@ namespace compliant
   {
     const HyperelasticLaw law(settings.law, material, settings.mooney_rivlin_ratio);
     const Tensor<2, dim>  F = unit_symmetric_tensor<dim>() + grad_u;
-    const double          J = determinant(F);
-    const auto            r = law.response(green_lagrange(grad_u), mixed, pressure);
-    sigma_zz                = r.S33 / J;
+    const auto            r = material_response(law, green_lagrange(grad_u), pressure);
+    // in plane stress J includes the thickness stretch sqrt(C33)
+    const double J = determinant(F) * (plane_stress ? std::sqrt(1 + 2 * r.E33) : 1.0);
+    sigma_zz       = r.S33 / J;
     return sym(F * Tensor<2, dim>(r.S) * transpose(F)) / J;
   }
 
@@ -576,7 +591,7 @@ namespace compliant
                                                   const Material       &material) const
   {
     const HyperelasticLaw law(settings.law, material, settings.mooney_rivlin_ratio);
-    return law.response(green_lagrange(grad_u), false, 0.0).energy;
+    return material_response(law, green_lagrange(grad_u), 0.0).energy;
   }
 
   template <int dim>

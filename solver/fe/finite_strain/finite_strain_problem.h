@@ -114,11 +114,16 @@ namespace compliant
     double                                       load_factor = 0; // of the current state
     static constexpr bool                        geometrically_nonlinear = true;
     bool                                         mixed       = false;
+    bool                                         plane_stress = false;
 
     dealii::PETScWrappers::MPI::Vector solution; // ghosted, converged state
     unsigned int                       total_linear_solves = 0;
 
   private:
+    // The law's response at one point: plane stress (2D) or plane strain/3D.
+    StressResponse<dim> material_response(const HyperelasticLaw &law,
+                                          const dealii::SymmetricTensor<2, dim> &E,
+                                          double pressure) const;
     // Dirichlet values at load factor `lambda` minus the current displacement (first Newton
     // iteration), or homogeneous (later iterations).
     dealii::AffineConstraints<double> make_constraints(double lambda, bool homogeneous,

@@ -108,6 +108,52 @@ namespace compliant
     return r;
   }
 
+  StressResponse<2> HyperelasticLaw::plane_stress_response(const SymmetricTensor<2, 2> &E) const
+  {
+    // small-strain plane stress as the start: E33 = -nu/(1-nu) (E11 + E22) = -lambda/(lambda+2mu) tr E
+    double E33 = -lambda_small_strain / (lambda_small_strain + 2 * mu) * trace(E);
+    SymmetricTensor<2, 3> E3;
+    for (unsigned int a = 0; a < 2; ++a)
+      for (unsigned int b = a; b < 2; ++b)
+        E3[a][b] = E[a][b];
+    StressResponse<3> r3;
+    bool              converged = false;
+    for (unsigned int iteration = 0; iteration < 50; ++iteration)
+      {
+        E3[2][2] = E33;
+        r3       = response<3>(E3, false, 0.0);
+        const double residual = r3.S[2][2];
+        if (std::abs(residual) <= 1e-13 * (mu + r3.S.norm()))
+          {
+            converged = true;
+            break;
+          }
+        double step = -residual / r3.tangent[2][2][2][2];
+        // keep the thickness stretch real: C33 = 1 + 2 E33 > 0
+        while (1 + 2 * (E33 + step) <= 0)
+          step /= 2;
+        E33 += step;
+      }
+    if (!converged)
+      throw std::runtime_error("plane stress: the thickness stretch did not converge (S33 = " +
+                               std::to_string(r3.S[2][2]) + ")");
+    StressResponse<2> r;
+    for (unsigned int a = 0; a < 2; ++a)
+      for (unsigned int b = a; b < 2; ++b)
+        {
+          r.S[a][b] = r3.S[a][b];
+          for (unsigned int c = 0; c < 2; ++c)
+            for (unsigned int d = c; d < 2; ++d)
+              r.tangent[a][b][c][d] = r3.tangent[a][b][c][d] - r3.tangent[a][b][2][2] *
+                                                                  r3.tangent[2][2][c][d] /
+                                                                  r3.tangent[2][2][2][2];
+        }
+    r.energy = r3.energy;
+    r.log_J  = r3.log_J;
+    r.E33    = E33;
+    return r;
+  }
+
   template StressResponse<2> HyperelasticLaw::response<2>(const SymmetricTensor<2, 2> &, bool,
                                                           double) const;
   template StressResponse<3> HyperelasticLaw::response<3>(const SymmetricTensor<2, 3> &, bool,

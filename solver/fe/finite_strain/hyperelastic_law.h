@@ -1,6 +1,7 @@
 // Hyperelastic laws for total-Lagrangian finite strain, in terms of the right Cauchy-Green
 // tensor C = I + 2E: second Piola-Kirchhoff stress S = 2 dW/dC and material tangent CC = 4 d2W/dC2.
-// In 2D the model is plane strain (C33 = 1).
+// In 2D the model is plane strain (C33 = 1) or, through plane_stress_response, plane stress
+// (C33 solved locally so that S33 = 0, tangent condensed).
 //
 // Mooney-Rivlin family (compressible; Holzapfel, Nonlinear Solid Mechanics, 2000, sec. 6.5):
 //   W = c1 (I1 - 3) + c2 (I2 - 3) - 2 (c1 + 2 c2) ln J + lambda/2 (ln J)^2
@@ -27,6 +28,7 @@ namespace compliant
     dealii::SymmetricTensor<4, dim> tangent; // dS/dE
     double                          energy   = 0;
     double                          S33      = 0; // out-of-plane S in plane strain
+    double                          E33      = 0; // out-of-plane strain in plane stress
     double                          log_J    = 0;
   };
 
@@ -44,6 +46,10 @@ namespace compliant
     template <int dim>
     StressResponse<dim> response(const dealii::SymmetricTensor<2, dim> &E, bool mixed,
                                  double pressure) const;
+
+    // Plane stress: the 3D law with the thickness strain E33 solved from S33 = 0 (Newton on one
+    // scalar per point), the in-plane tangent condensed, dS/dE = T - T_ab33 T_33cd / T_3333.
+    StressResponse<2> plane_stress_response(const dealii::SymmetricTensor<2, 2> &E) const;
 
     double lambda() const { return lambda_volumetric; }
     bool   is_saint_venant_kirchhoff() const { return svk; }
