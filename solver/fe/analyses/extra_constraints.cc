@@ -1,6 +1,7 @@
 #include "analyses/extra_constraints.h"
 
 #include "analyses/edge_supports.h"
+#include "analyses/mirror_ties.h"
 #include "analyses/pin_joints.h"
 #include "input/spec_list.h"
 
@@ -12,6 +13,17 @@ namespace compliant
     prm.declare_entry("Edge supports", "", dealii::Patterns::Anything(),
                       "Components held at zero on the DoFs shared by several boundaries (edges in "
                       "3D, corners in 2D): 'bottom & sides: z'. Read by the modal and linkage "
+                      "analyses only.");
+    prm.declare_entry("Mirror ties", "", dealii::Patterns::Anything(),
+                      "Ties each node of a boundary to its mirror image across a plane: "
+                      "'x_ends: plane=z 0, even=y, odd=z; ...' makes u_y even and u_z odd in z on "
+                      "x_ends (u_y(x,y,-z) = u_y(x,y,z), u_z(x,y,-z) = -u_z(x,y,z), so u_z = 0 on "
+                      "the plane); unnamed components stay free. The plane is an axis and a "
+                      "coordinate (a number or an expression of the geometry parameters); every "
+                      "node must have a mirror node on the same boundary. Holds the part of the "
+                      "field of one parity and leaves the other free, e.g. the bending part of a "
+                      "plate's side faces but not the membrane part (the 3D hard simple support, "
+                      "see cases/verification/nafems_fv52.md). Read by the modal and linkage "
                       "analyses only.");
     prm.declare_entry("Pins", "", dealii::Patterns::Anything(),
                       "Frictionless pin joints: 'B: pin_B, eye_AB_B, eye_BC_B; ...', the pin "
@@ -27,6 +39,7 @@ namespace compliant
   ExtraConstraints read_extra_constraints(const dealii::ParameterHandler &prm)
   {
     return {trim(prm.get({"Extra constraints"}, "Edge supports")),
+            trim(prm.get({"Extra constraints"}, "Mirror ties")),
             trim(prm.get({"Extra constraints"}, "Pins"))};
   }
 
@@ -36,6 +49,7 @@ namespace compliant
                              dealii::AffineConstraints<double> &constraints)
   {
     add_edge_supports(problem, extra.edge_supports, "Extra constraints/Edge supports", constraints);
+    add_mirror_ties(problem, extra.mirror_ties, "Extra constraints/Mirror ties", constraints);
     add_pin_joints(problem, extra.pins, "Extra constraints/Pins", constraints);
   }
 

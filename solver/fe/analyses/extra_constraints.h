@@ -1,4 +1,4 @@
-// The "Extra constraints" case-file subsection: edge supports and pin joints, honoured by the
+// The "Extra constraints" case-file subsection: edge supports, mirror ties and pin joints, honoured by the
 // analyses that rebuild the constraints on every rank (modal, linkage). 'linear static' does not
 // read it.
 #pragma once
@@ -15,15 +15,16 @@ namespace compliant
   struct ExtraConstraints
   {
     std::string edge_supports;
+    std::string mirror_ties;
     std::string pins;
 
-    bool empty() const { return edge_supports.empty() && pins.empty(); }
+    bool empty() const { return edge_supports.empty() && mirror_ties.empty() && pins.empty(); }
   };
 
   void             declare_extra_constraints(dealii::ParameterHandler &prm);
   ExtraConstraints read_extra_constraints(const dealii::ParameterHandler &prm);
 
-  // Adds edge supports, then pins, to constraints gathered from every rank (not closed).
+  // Adds edge supports, then mirror ties, then pins, to constraints gathered from every rank (not closed).
   // Throws std::invalid_argument naming the entry.
   template <int dim>
   void add_extra_constraints(const LinearElasticProblem<dim> &problem,

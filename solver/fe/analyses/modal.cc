@@ -89,7 +89,8 @@ namespace compliant
       dealii::Timer       timer;
       const ModalSettings    settings  = read_settings(context);
       const ExtraConstraints extra     = read_extra_constraints(context.prm);
-      const bool             supported = has_supports(p) || !extra.edge_supports.empty();
+      const bool             supported = has_supports(p) || !extra.edge_supports.empty() ||
+                                       !extra.mirror_ties.empty();
       LinearElasticProblem<dim> problem(p, context.geometry, comm);
       // Supports hold still in a vibration: the constraints without their prescribed values.
       dealii::AffineConstraints<double> constraints;
