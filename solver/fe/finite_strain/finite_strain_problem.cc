@@ -300,6 +300,11 @@ namespace compliant
                 }
               const auto   E        = green_lagrange(grad_u[q]);
               const auto   response = material_response(law, E, mixed ? p_values[q] : 0.0);
+              if (!std::isfinite(response.S.norm()))
+                {
+                  ++inverted; // no plane-stress state: as bad as an inverted element
+                  break;
+                }
               const double JxW      = fe_values.JxW(q) * thickness;
               const auto   Ci       = invert(unit_symmetric_tensor<dim>() + 2 * E);
               for (unsigned int i = 0; i < n; ++i)
@@ -413,7 +418,7 @@ namespace compliant
       tangent.compress(VectorOperation::add);
     residual.compress(VectorOperation::add);
     if (Utilities::MPI::sum(inverted, communicator) > 0)
-      throw StepFailure("an element inverted (det F <= 0) at load factor " +
+      throw StepFailure("an element inverted (det F <= 0, or no plane-stress thickness) at load factor " +
                         std::to_string(lambda));
   }
 

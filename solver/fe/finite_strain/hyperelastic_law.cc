@@ -1,6 +1,7 @@
 #include "finite_strain/hyperelastic_law.h"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace compliant
@@ -116,9 +117,12 @@ namespace compliant
     for (unsigned int a = 0; a < 2; ++a)
       for (unsigned int b = a; b < 2; ++b)
         E3[a][b] = E[a][b];
+    // S33 rises monotonically with E33 for these laws: Newton, kept inside a bracket [lower, upper]
+    // that shrinks with every evaluation and falls back to bisection, so it cannot diverge.
+    double            lower = -0.5, upper = std::numeric_limits<double>::infinity();
     StressResponse<3> r3;
     bool              converged = false;
-    for (unsigned int iteration = 0; iteration < 50; ++iteration)
+    for (unsigned int iteration = 0; iteration < 200; ++iteration)
       {
         E3[2][2] = E33;
         r3       = response<3>(E3, false, 0.0);
@@ -128,15 +132,26 @@ namespace compliant
             converged = true;
             break;
           }
-        double step = -residual / r3.tangent[2][2][2][2];
-        // keep the thickness stretch real: C33 = 1 + 2 E33 > 0
-        while (1 + 2 * (E33 + step) <= 0)
-          step /= 2;
-        E33 += step;
+        (residual > 0 ? upper : lower) = E33;
+        const double slope = r3.tangent[2][2][2][2];
+        double       next  = E33 - residual / slope;
+        if (!(slope > 0) || !(next > lower && next < upper))
+          next = std::isfinite(upper) ? 0.5 * (lower + upper) : E33 + std::max(1.0, std::abs(E33));
+        if (next == E33)
+          {
+            converged = true; // the bracket has shrunk to round-off
+            break;
+          }
+        E33 = next;
       }
-    if (!converged)
-      throw std::runtime_error("plane stress: the thickness stretch did not converge (S33 = " +
-                               std::to_string(r3.S[2][2]) + ")");
+    if (!converged || !std::isfinite(r3.S.norm()))
+      {
+        // The caller decides: assembly treats it like an inverted element (the step is cut back).
+        StressResponse<2> failed;
+        failed.S      = std::numeric_limits<double>::quiet_NaN() * unit_symmetric_tensor<2>();
+        failed.energy = std::numeric_limits<double>::quiet_NaN();
+        return failed;
+      }
     StressResponse<2> r;
     for (unsigned int a = 0; a < 2; ++a)
       for (unsigned int b = a; b < 2; ++b)

@@ -49,6 +49,7 @@ namespace compliant
 
     // Plane stress: the 3D law with the thickness strain E33 solved from S33 = 0 (Newton on one
     // scalar per point), the in-plane tangent condensed, dS/dE = T - T_ab33 T_33cd / T_3333.
+    // If no thickness strain balances S33 (a point crushed beyond the law), S is NaN.
     StressResponse<2> plane_stress_response(const dealii::SymmetricTensor<2, 2> &E) const;
 
     double lambda() const { return lambda_volumetric; }

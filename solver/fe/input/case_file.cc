@@ -128,6 +128,15 @@ namespace compliant
                         "Boundaries whose average displacement is reported: 'right, top'.");
       prm.declare_entry("Rotations", "", Patterns::Anything(),
                         "Boundaries whose best-fit rigid rotation is reported: 'right'.");
+      prm.declare_entry("Region maxima", "", Patterns::Anything(),
+                        "Bodies (physical groups of full dimension) whose peak strain and stress "
+                        "are reported with where they occur: 'flexure_A, flexure_B' ('*': every "
+                        "body). Gives max_principal_strain_in_<body> (largest principal strain: "
+                        "small strain in linear analyses, engineering lambda_1 - 1 at finite "
+                        "strain; in-plane in 2D), max_von_mises_in_<body> and the reference "
+                        "coordinates of each (_x, _y, _z), sampled at quadrature points and "
+                        "element nodes; per step in a nonlinear curve.csv. Linear static, "
+                        "linkage and nonlinear static analyses.");
       prm.declare_entry("Derived", "", Patterns::Anything(),
                         "Quantities computed from others with muparser: "
                         "'J = reaction_moment_right_x / (G * twist)'. Names of quantities, "
@@ -364,6 +373,7 @@ namespace compliant
     p.mean_displacements = prm.get("Mean displacements");
     p.rotations          = prm.get("Rotations");
     p.derived            = prm.get("Derived");
+    p.region_maxima      = prm.get("Region maxima");
     prm.leave_subsection();
 
     prm.enter_subsection("Comparison");

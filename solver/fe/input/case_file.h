@@ -45,6 +45,7 @@ namespace compliant
     std::string petsc_options;
 
     std::string points, reactions, mean_displacements, rotations, derived;
+    std::string region_maxima; // bodies whose peak strain and stress are reported
     std::string checks;
 
     std::string output_directory;

@@ -1,4 +1,5 @@
 #include "quantities/quantities.h"
+#include "quantities/region_maxima.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -169,6 +170,7 @@ namespace compliant
       boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Mean displacements");
     for (const auto &name : names_in(p.rotations))
       boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Rotations");
+    validate_region_maxima(problem);
   }
 
   template <class Problem>
@@ -383,6 +385,7 @@ namespace compliant
       q["strain_energy"]       = Utilities::MPI::sum(energy, comm);
       q["yield_safety_factor"] = Utilities::MPI::min(safety, comm);
     }
+    add_region_maxima(problem, q);
     return q;
   }
 
