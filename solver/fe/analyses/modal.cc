@@ -91,6 +91,18 @@ namespace compliant
       const ExtraConstraints extra     = read_extra_constraints(context.prm);
       const bool             supported = has_supports(p) || !extra.edge_supports.empty() ||
                                        !extra.mirror_ties.empty();
+      // Static quantities have no meaning for a mode: say so rather than drop them silently.
+      std::string ignored;
+      for (const auto &[name, value] :
+           {std::pair<std::string, std::string>{"Points", p.points}, {"Reactions", p.reactions},
+            {"Mean displacements", p.mean_displacements}, {"Rotations", p.rotations},
+            {"Region maxima", p.region_maxima}})
+        if (!value.empty())
+          ignored += (ignored.empty() ? "" : ", ") + ("Quantities/" + name);
+      if (root && !ignored.empty())
+        std::cout << "note: a modal analysis reports frequencies, effective masses and Derived "
+                     "quantities; ignored here: "
+                  << ignored << "\n";
       LinearElasticProblem<dim> problem(p, context.geometry, comm);
       // Supports hold still in a vibration: the constraints without their prescribed values.
       dealii::AffineConstraints<double> constraints;
@@ -146,6 +158,8 @@ namespace compliant
       summary.settings.insert({"eigensolver", "SLEPc Krylov-Schur, shift-and-invert, MUMPS"});
       summary.settings.insert({"mass_matrix", "consistent"});
       summary.settings.insert({"supports", supported ? "Dirichlet boundaries held fixed" : "none (free)"});
+      if (!ignored.empty())
+        summary.settings.insert({"ignored_quantities", ignored});
       auto &q            = summary.quantities;
       q["n_dofs"]        = problem.dof_handler.n_dofs();
       q["n_cells"]       = problem.triangulation.n_active_cells();
