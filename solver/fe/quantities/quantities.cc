@@ -1,4 +1,6 @@
 #include "quantities/quantities.h"
+
+#include "quantities/peak_sampling.h"
 #include "quantities/region_maxima.h"
 
 #include <deal.II/base/quadrature_lib.h>
@@ -336,10 +338,7 @@ namespace compliant
 
     // Peak von Mises over quadrature points and element nodes; strain energy.
     {
-      std::vector<Point<dim>> points = problem.quadrature->get_points();
-      const auto              nodes  = displacement_support_points(*problem.fe); // kept alive
-      points.insert(points.end(), nodes.get_points().begin(), nodes.get_points().end());
-      const Quadrature<dim> sample(points);
+      const Quadrature<dim> sample = peak_sample_points(*problem.quadrature, *problem.fe);
       const bool            has_pressure = problem.fe->n_components() > dim;
       const FEValuesExtractors::Vector u(0);
       const FEValuesExtractors::Scalar pressure(has_pressure ? dim : 0);
@@ -375,11 +374,8 @@ namespace compliant
               energy += problem.energy_density(grad_q[k], material) * fe_values.JxW(k) *
                         problem.thickness;
           }
-      const auto global_max = Utilities::MPI::min_max_avg(max_vm, comm);
-      Tensor<1, dim> location = Utilities::MPI::this_mpi_process(comm) == global_max.max_index ?
-                                  Tensor<1, dim>(max_location) : Tensor<1, dim>();
-      location = Utilities::MPI::sum(location, comm);
-      q["max_von_mises"] = global_max.max;
+      const auto [global_max, location] = global_peak(max_vm, max_location, comm);
+      q["max_von_mises"] = global_max;
       for (unsigned int d = 0; d < dim; ++d)
         q[std::string("max_von_mises_") + axis_name[d]] = location[d];
       q["strain_energy"]       = Utilities::MPI::sum(energy, comm);

@@ -8,6 +8,7 @@
 #include "elasticity/linear_elastic_problem.h"
 #include "finite_strain/finite_strain_problem.h"
 #include "input/spec_list.h"
+#include "quantities/peak_sampling.h"
 
 #include <limits>
 #include <stdexcept>
@@ -78,11 +79,7 @@ namespace compliant
       return;
     MPI_Comm comm = problem.communicator;
 
-    // Quadrature points and the displacement element's nodes (the surface of a flexure).
-    std::vector<Point<dim>> points = problem.quadrature->get_points();
-    const auto &nodes = problem.fe->base_element(0).get_unit_support_points();
-    points.insert(points.end(), nodes.begin(), nodes.end());
-    const Quadrature<dim> sample(points);
+    const Quadrature<dim> sample = peak_sample_points(*problem.quadrature, *problem.fe);
     const bool            has_pressure = problem.fe->n_components() > dim;
     const FEValuesExtractors::Vector u(0);
     const FEValuesExtractors::Scalar pressure(has_pressure ? dim : 0);
@@ -122,14 +119,9 @@ namespace compliant
             }
         }
 
-    // The rank holding the largest value reports where it is.
     const auto reduce = [&](const Peak &local, const std::string &key) {
-      const auto     global = Utilities::MPI::min_max_avg(local.value, comm);
-      Tensor<1, dim> where;
-      if (Utilities::MPI::this_mpi_process(comm) == global.max_index)
-        where = local.where;
-      where  = Utilities::MPI::sum(where, comm);
-      q[key] = global.max;
+      const auto [value, where] = global_peak(local.value, local.where, comm);
+      q[key] = value;
       for (unsigned int d = 0; d < dim; ++d)
         q[key + "_" + axis_name[d]] = where[d];
     };
