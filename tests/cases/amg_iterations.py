@@ -12,10 +12,11 @@ from study import run_case  # noqa: E402
 case = sys.argv[1]
 its = []
 for ny in (8, 16, 32):
-    q = run_case(case, ["Geometry/Parameters/ny=%d" % ny])["quantities"]
+    q = run_case(case, ["Geometry/Parameters/ny=%d" % ny, "Linear solver/Method=cg-amg"])["quantities"]
     its.append(q["solver_iterations"])
     print("ny=%d  DoFs %d  CG+GAMG iterations %d" % (ny, q["n_dofs"], q["solver_iterations"]))
-jacobi = [run_case(case, ["Geometry/Parameters/ny=%d" % ny, "Linear solver/PETSc options=-pc_type jacobi",
+jacobi = [run_case(case, ["Geometry/Parameters/ny=%d" % ny, "Linear solver/Method=cg-amg",
+                          "Linear solver/PETSc options=-pc_type jacobi",
                           "Linear solver/Maximum iterations=100000"])["quantities"]["solver_iterations"]
           for ny in (8, 16)]
 print("CG+Jacobi for comparison: ny=8 %d, ny=16 %d iterations" % tuple(jacobi))

@@ -63,6 +63,13 @@ namespace compliant
   {
     const auto &p    = context.parameters;
     const bool  root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
+    {
+      // Peak resident memory (VmHWM) of the largest rank: what sizes a model to a machine.
+      dealii::Utilities::System::MemoryStats memory;
+      dealii::Utilities::System::get_memory_stats(memory);
+      summary.quantities["memory_peak_max_rank_mb"] =
+        dealii::Utilities::MPI::max(memory.VmHWM / 1024.0, context.communicator);
+    }
     try
       {
         // A nonlinear run that converged no step has no quantities to compare.

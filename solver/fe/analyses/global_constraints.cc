@@ -40,6 +40,7 @@ namespace compliant
                                              AffineConstraints<double> &&constraints)
   {
     constraints.close();
+    problem.require_assembled_matrix("pins, mirror ties or edge supports");
     problem.constraints = std::move(constraints);
     const auto             n_dofs = problem.dof_handler.n_dofs();
     DynamicSparsityPattern dsp(n_dofs, n_dofs);

@@ -20,6 +20,7 @@ namespace compliant
       const bool    root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
       dealii::Timer timer;
       LinearElasticProblem<dim> problem(p, context.geometry, comm);
+      problem.matrix_free_allowed = true; // one solve of K u = f: no stored matrix needed
       try
         {
           parse_checks(p.checks);
@@ -37,18 +38,37 @@ namespace compliant
       problem.assemble();
       problem.solve();
       if (root)
-        std::cout << "Solved: " << problem.statistics.iterations << " iterations ("
-                  << p.solver_method << "), assembly " << problem.statistics.assembly_seconds
-                  << " s, solve " << problem.statistics.solve_seconds << " s" << std::endl;
+        {
+          if (!problem.solver_note.empty())
+            std::cout << "Linear solver: " << problem.solver_note << std::endl;
+          std::cout << "Solved: " << problem.statistics.iterations << " iterations ("
+                    << problem.solver_method << "), assembly " << problem.statistics.assembly_seconds
+                    << " s, solve " << problem.statistics.solve_seconds << " s";
+          if (!problem.statistics.level_dofs.empty())
+            {
+              std::cout << " (multigrid set-up " << problem.statistics.preconditioner_setup_seconds
+                        << " s; DoFs per degree:";
+              for (const auto n : problem.statistics.level_dofs)
+                std::cout << ' ' << n;
+              std::cout << ')';
+            }
+          std::cout << std::endl;
+        }
 
       RunSummary summary =
         start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
-      summary.settings.insert({"solver", p.solver_method});
+      summary.settings.insert({"solver", problem.solver_method});
+      summary.settings.insert({"solver_requested", p.solver_method});
+      if (!problem.solver_note.empty())
+        summary.settings.insert({"solver_note", problem.solver_note});
       summary.quantities = compute_quantities(problem);
       summary.quantities["solver_iterations"] = problem.statistics.iterations;
       summary.quantities["time_setup"]    = problem.statistics.setup_seconds;
       summary.quantities["time_assembly"] = problem.statistics.assembly_seconds;
       summary.quantities["time_solve"]    = problem.statistics.solve_seconds;
+      if (!problem.statistics.level_dofs.empty())
+        summary.quantities["time_preconditioner_setup"] =
+          problem.statistics.preconditioner_setup_seconds;
       summary.quantities["time_total"]    = timer.wall_time();
 
       finish_run(context, summary, problem.expression_variables(),

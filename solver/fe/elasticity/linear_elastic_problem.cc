@@ -16,10 +16,15 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include "elasticity/rigid_rotation.h"
+#include "fast_solver/p_multigrid_solver.h"
+#include "linear_algebra/rigid_body_modes.h"
 #include "elasticity/von_mises.h"
 #include "mesh/mesh_reader.h"
 #include "linear_algebra/petsc_linear_solver.h"
 
+#include <deal.II/lac/solver_control.h>
+
+#include <iostream>
 #include <sstream>
 
 namespace compliant
@@ -49,12 +54,66 @@ namespace compliant
       throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
                                   "a linear static solve needs the rigid-body motion constrained");
     make_constraints();
+    choose_solver_method();
+    if (solver_method != "matrix-free")
+      allocate_matrix();
+    statistics.setup_seconds = timer.wall_time();
+  }
+
+  template <int dim>
+  void LinearElasticProblem<dim>::allocate_matrix()
+  {
     DynamicSparsityPattern dsp(locally_relevant_dofs);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
     SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator,
                                                locally_relevant_dofs);
     system_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
-    statistics.setup_seconds = timer.wall_time();
+  }
+
+  template <int dim>
+  void LinearElasticProblem<dim>::choose_solver_method()
+  {
+    const std::string &requested = parameters.solver_method;
+    const bool hexahedra = triangulation.all_reference_cells_are_hyper_cube();
+    const bool matrix_free_possible = hexahedra && matrix_free_allowed;
+    std::string why_not;
+    if (!hexahedra)
+      why_not = "the matrix-free operator needs quadrilateral/hexahedral cells";
+    else if (!matrix_free_allowed)
+      why_not = "this analysis needs the assembled stiffness matrix";
+    solver_note.clear();
+    if (requested == "matrix-free")
+      {
+        solver_method = matrix_free_possible ? "matrix-free" : "cg-amg";
+        if (!matrix_free_possible)
+          solver_note = "matrix-free requested, but " + why_not + ": using cg-amg";
+      }
+    else if (requested == "auto")
+      {
+        // Measured (cases/benchmarks): p-multigrid is fastest for degree >= 2 on hexahedra; below
+        // ~3e4 DoFs MUMPS costs less than any set-up; otherwise AMG on the assembled matrix.
+        if (matrix_free_possible && parameters.element_degree >= 2)
+          solver_method = "matrix-free",
+          solver_note   = "auto: matrix-free p-multigrid (degree " +
+                        std::to_string(parameters.element_degree) + " to 1, AMG on degree 1)";
+        else if (dof_handler.n_dofs() < 30000)
+          solver_method = "direct", solver_note = "auto: MUMPS for a small system";
+        else
+          solver_method = "cg-amg",
+          solver_note   = "auto: CG + GAMG on the assembled matrix" +
+                        (why_not.empty() ? std::string(" (degree 1)") : " (" + why_not + ")");
+      }
+    else
+      solver_method = requested;
+  }
+
+  template <int dim>
+  void LinearElasticProblem<dim>::require_assembled_matrix(const std::string &reason)
+  {
+    if (solver_method != "matrix-free")
+      return;
+    solver_method = "cg-amg";
+    solver_note   = "matrix-free not possible with " + reason + ": using cg-amg";
   }
 
   template <int dim>
@@ -108,11 +167,20 @@ namespace compliant
   {
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    add_support_constraints(dof_handler, constraints, false);
+    constraints.close();
+  }
+
+  template <int dim>
+  void LinearElasticProblem<dim>::add_support_constraints(const DoFHandler<dim>     &dofs,
+                                                          AffineConstraints<double> &constraints,
+                                                          const bool homogeneous) const
+  {
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    const Functions::ZeroFunction<dim> zero(dim);
     // First condition wins on shared edges/corners: clamped, then displacement, then rotation.
     for (const auto &[name, id] : boundary_conditions.clamped)
-      VectorTools::interpolate_boundary_values(*mapping, dof_handler, id,
-                                               Functions::ZeroFunction<dim>(dim), constraints);
+      VectorTools::interpolate_boundary_values(*mapping, dofs, id, zero, constraints);
     for (const auto &d : boundary_conditions.displacements)
       {
         FunctionParser<dim> field(dim);
@@ -130,14 +198,19 @@ namespace compliant
                                         "' must be numbers or expressions of x, y" +
                                         (dim == 3 ? ", z" : "") + " and geometry parameters");
           }
-        VectorTools::interpolate_boundary_values(*mapping, dof_handler, d.boundary_id, field,
+        VectorTools::interpolate_boundary_values(*mapping, dofs, d.boundary_id,
+                                                 homogeneous ? static_cast<const Function<dim> &>(zero) :
+                                                               field,
                                                  constraints, ComponentMask(d.mask));
       }
     for (const auto &r : boundary_conditions.rotations)
-      VectorTools::interpolate_boundary_values(*mapping, dof_handler, r.boundary_id,
-                                               RigidRotation<dim>(r.angle, r.center, r.axis),
-                                               constraints);
-    constraints.close();
+      {
+        const RigidRotation<dim> rotation(r.angle, r.center, r.axis);
+        VectorTools::interpolate_boundary_values(*mapping, dofs, r.boundary_id,
+                                                 homogeneous ? static_cast<const Function<dim> &>(zero) :
+                                                               rotation,
+                                                 constraints);
+      }
   }
 
   template <int dim>
@@ -193,7 +266,10 @@ namespace compliant
   void LinearElasticProblem<dim>::assemble()
   {
     Timer timer;
-    system_matrix   = 0;
+    // The matrix-free solver needs only C^T f; it moves prescribed values to the right side itself.
+    const bool with_matrix = solver_method != "matrix-free";
+    if (with_matrix)
+      system_matrix = 0;
     system_rhs      = 0;
     external_forces = 0;
     const auto tractions = boundary_tractions();
@@ -240,14 +316,18 @@ namespace compliant
           for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
             {
               const double JxW = fe_values.JxW(q) * thickness;
-              for (unsigned int i = 0; i < n; ++i)
-                eps[i] = fe_values[u].symmetric_gradient(i, q);
+              if (with_matrix)
+                for (unsigned int i = 0; i < n; ++i)
+                  eps[i] = fe_values[u].symmetric_gradient(i, q);
               for (unsigned int i = 0; i < n; ++i)
                 {
-                  double           sigma_zz;
-                  const auto       sigma_i = stress(eps[i], material, sigma_zz);
-                  for (unsigned int j = 0; j <= i; ++j)
-                    cell_matrix(i, j) += (sigma_i * eps[j]) * JxW;
+                  if (with_matrix)
+                    {
+                      double     sigma_zz;
+                      const auto sigma_i = stress(eps[i], material, sigma_zz);
+                      for (unsigned int j = 0; j <= i; ++j)
+                        cell_matrix(i, j) += (sigma_i * eps[j]) * JxW;
+                    }
                   cell_rhs(i) += fe_values[u].value(i, q) * body_force * JxW;
                 }
             }
@@ -279,61 +359,105 @@ namespace compliant
               }
           cell->get_dof_indices(dofs);
           external_forces.add(dofs, cell_rhs);
-          constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_matrix,
-                                                 system_rhs);
+          if (with_matrix)
+            constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_matrix,
+                                                   system_rhs);
+          else
+            constraints.distribute_local_to_global(cell_rhs, dofs, system_rhs);
         }
-    system_matrix.compress(VectorOperation::add);
+    if (with_matrix)
+      system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     external_forces.compress(VectorOperation::add);
     statistics.assembly_seconds = timer.wall_time();
   }
 
-  namespace
-  {
-    // Translations and infinitesimal rotations: the kernel of elasticity without supports.
-    template <int dim>
-    class RigidBodyMode : public Function<dim>
-    {
-    public:
-      explicit RigidBodyMode(unsigned int mode) : Function<dim>(dim), mode(mode) {}
-      void vector_value(const Point<dim> &p, Vector<double> &v) const override
-      {
-        v = 0;
-        if (mode < dim)
-          v[mode] = 1;
-        else if (dim == 2)
-          v[0] = -p[1], v[1] = p[0];
-        else
-          {
-            const unsigned int axis = mode - dim, a = (axis + 1) % 3, b = (axis + 2) % 3;
-            v[a] = -p[b];
-            v[b] = p[a];
-          }
-      }
-
-    private:
-      unsigned int mode;
-    };
-  } // namespace
 
   template <int dim>
   void LinearElasticProblem<dim>::solve()
   {
-    Timer timer;
-    std::vector<PETScWrappers::MPI::Vector> modes;
-    if (parameters.solver_method != "direct")
-      for (unsigned int m = 0; m < (dim == 2 ? 3u : 6u); ++m)
-        {
-          modes.emplace_back(locally_owned_dofs, communicator);
-          VectorTools::interpolate(*mapping, dof_handler, RigidBodyMode<dim>(m), modes.back());
-        }
+    Timer                      timer;
     PETScWrappers::MPI::Vector x(locally_owned_dofs, communicator);
-    LinearSolverSettings       settings{parameters.solver_method, parameters.solver_tolerance,
-                                  parameters.solver_max_iterations, parameters.petsc_options};
-    statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, modes, settings);
+    if (solver_method == "matrix-free" && !solve_matrix_free(x))
+      {
+        // 'auto' only: the iterative method struggled (very thin cells); MUMPS is exact.
+        solver_method = "direct";
+        allocate_matrix();
+        assemble();
+      }
+    if (solver_method != "matrix-free")
+      {
+        const bool iterative = solver_method != "direct";
+        const auto modes     = iterative ? rigid_body_modes(*mapping, dof_handler, communicator) :
+                                           std::vector<PETScWrappers::MPI::Vector>();
+        LinearSolverSettings settings{solver_method, parameters.solver_tolerance,
+                                      parameters.solver_max_iterations, parameters.petsc_options};
+        if (parameters.solver_method == "auto" && iterative)
+          settings.max_iterations = std::min(settings.max_iterations, 300u);
+        try
+          {
+            statistics.iterations =
+              solve_linear_system(system_matrix, x, system_rhs, modes, settings, dim);
+          }
+        catch (const std::runtime_error &e)
+          {
+            if (parameters.solver_method != "auto" || !iterative)
+              throw;
+            solver_note += "; CG + GAMG did not converge in " +
+                           std::to_string(settings.max_iterations) +
+                           " iterations: solved again with MUMPS (direct)";
+            solver_method = "direct";
+            settings.method = "direct";
+            statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, {}, settings);
+          }
+      }
     constraints.distribute(x);
     solution = x;
     statistics.solve_seconds = timer.wall_time();
+  }
+
+  template <int dim>
+  bool LinearElasticProblem<dim>::solve_matrix_free(PETScWrappers::MPI::Vector &x)
+  {
+    fast_solver::PMultigridSettings settings;
+    settings.relative_tolerance = parameters.solver_tolerance;
+    settings.max_iterations     = parameters.solver_method == "auto" ?
+                                    std::min(parameters.solver_max_iterations, 300u) :
+                                    parameters.solver_max_iterations;
+    settings.petsc_options      = parameters.petsc_options;
+    const bool plane_stress     = dim == 2 && parameters.model == "plane stress";
+    const auto lame = [&](const types::material_id id) {
+      const Material &material = materials.at(id);
+      const double    mu       = material.shear_modulus();
+      double          lambda   = material.lame_lambda();
+      if (plane_stress)
+        lambda = 2 * lambda * mu / (lambda + 2 * mu);
+      return std::make_pair(lambda * thickness, mu * thickness);
+    };
+    fast_solver::PMultigridSolver<dim> solver(
+      *mapping, dof_handler,
+      [this](const DoFHandler<dim> &dofs, AffineConstraints<double> &level_constraints) {
+        add_support_constraints(dofs, level_constraints, true);
+      },
+      lame, settings, communicator);
+    statistics.preconditioner_setup_seconds = solver.statistics().setup_seconds;
+    statistics.level_dofs.assign(solver.statistics().level_dofs.begin(),
+                                 solver.statistics().level_dofs.end());
+    try
+      {
+        statistics.iterations = solver.solve(system_rhs, constraints, x);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        const std::string what = "matrix-free p-multigrid did not converge in " +
+                                 std::to_string(e.last_step) + " iterations (residual " +
+                                 std::to_string(e.last_residual) + ")";
+        if (parameters.solver_method != "auto")
+          throw std::runtime_error(what + "; try 'Linear solver/Method = direct' or more iterations");
+        solver_note += "; " + what + ": solved again with MUMPS (direct)";
+        return false;
+      }
+    return true;
   }
 
   template <int dim>

@@ -25,6 +25,9 @@ namespace compliant
   {
     unsigned int iterations = 0;
     double       setup_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
+    // Matrix-free p-multigrid: set-up of the levels (inside solve_seconds), DoFs per level.
+    double                    preconditioner_setup_seconds = 0;
+    std::vector<std::size_t>  level_dofs;
   };
 
   template <int dim>
@@ -36,14 +39,23 @@ namespace compliant
     LinearElasticProblem(const CaseParameters &parameters, const MeshedGeometry &geometry,
                          MPI_Comm communicator);
 
-    // Builds mesh, DoFs and constraints; every case-file name is checked here, before any
-    // work or output (throws std::invalid_argument).
+    // Builds mesh, DoFs and constraints and decides the linear solver (solver_method); every
+    // case-file name is checked here, before any work or output (throws std::invalid_argument).
     void setup();
     // The part of setup() that needs no supports: mesh, elements, materials, conditions, DoFs,
     // vectors, hanging-node constraints only (a free-free modal analysis starts from here).
     void setup_discretization();
+    // The right-hand side, and the stiffness matrix unless the solver is matrix-free.
     void assemble();
     void solve();
+    // Adds hanging-node and support constraints (clamped, displacement, rotation; the first
+    // condition wins on shared edges) for any DoFHandler of this mesh; homogeneous: values zero.
+    void add_support_constraints(const dealii::DoFHandler<dim>     &dofs,
+                                 dealii::AffineConstraints<double> &constraints,
+                                 bool                               homogeneous) const;
+    // Called by whoever installs constraints beyond the supports (pins, ties): the matrix-free
+    // levels could not represent them, so the solve falls back to an assembled matrix.
+    void require_assembled_matrix(const std::string &reason);
 
     // Stress at a point from the displacement gradient: sigma = lambda tr(eps) I + 2 mu eps
     // (plane stress uses the reduced lambda). Also returns sigma_zz for von Mises in 2D.
@@ -78,6 +90,12 @@ namespace compliant
     static constexpr bool   geometrically_nonlinear = false;
     static constexpr double load_factor             = 1;
 
+    // Set by an analysis before setup() when it only needs K u = f solved (linear static): then
+    // 'auto' and 'matrix-free' may skip the assembled matrix.
+    bool matrix_free_allowed = false;
+    // The solver actually used (Linear solver/Method with 'auto' resolved) and why, for the log.
+    std::string solver_method, solver_note;
+
     dealii::PETScWrappers::MPI::SparseMatrix system_matrix;
     dealii::PETScWrappers::MPI::Vector       system_rhs;
     // External forces without constraints applied: the reactions are f_int(u) - f_ext.
@@ -91,6 +109,11 @@ namespace compliant
 
   private:
     void make_constraints();
+    void choose_solver_method();
+    void allocate_matrix();
+    // Solves with the matrix-free p-multigrid; false if it did not converge and 'auto' allows
+    // falling back (solver_note says so).
+    bool solve_matrix_free(dealii::PETScWrappers::MPI::Vector &x);
     // Traction from Loads/Traction and Loads/Total force, per boundary id.
     std::map<int, dealii::Tensor<1, dim>> boundary_tractions() const;
     double boundary_measure(int boundary_id) const;

@@ -102,9 +102,16 @@ namespace compliant
 
     prm.enter_subsection("Linear solver");
     {
-      prm.declare_entry("Method", "cg-amg", Patterns::Selection("cg-amg|direct"),
-                        "cg-amg: conjugate gradients with PETSc GAMG given the rigid-body modes; "
-                        "direct: MUMPS LU.");
+      prm.declare_entry("Method", "auto", Patterns::Selection("auto|matrix-free|cg-amg|direct"),
+                        "auto: matrix-free for degree >= 2 on quadrilaterals/hexahedra in linear "
+                        "static analyses, else MUMPS below 30000 DoFs, else cg-amg; an iterative "
+                        "solve that fails to converge in 300 iterations is redone with MUMPS (the "
+                        "log says so). matrix-free: CG on the operator without a stored matrix, "
+                        "preconditioned by a p-multigrid (degree p..1, Chebyshev smoothing) with "
+                        "PETSc GAMG on degree 1 (linear static, quadrilaterals/hexahedra; "
+                        "otherwise cg-amg is used and the log says so). cg-amg: conjugate gradients "
+                        "with PETSc GAMG on the assembled matrix, given its block size and the "
+                        "rigid-body modes. direct: MUMPS LU.");
       prm.declare_entry("Relative tolerance", "1e-10", Patterns::Double(0, 1),
                         "Residual reduction of the iterative solver.");
       prm.declare_entry("Maximum iterations", "2000", Patterns::Integer(1),

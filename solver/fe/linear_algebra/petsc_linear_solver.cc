@@ -25,13 +25,53 @@ namespace compliant
           modes[i] /= modes[i].l2_norm();
         }
     }
+
+    // Sets the block size and the orthonormalized near null space on the matrix; returns the null
+    // space object the caller destroys.
+    MatNullSpace attach_near_null_space(Mat A, MPI_Comm comm,
+                                        std::vector<dealii::PETScWrappers::MPI::Vector> &modes,
+                                        const unsigned int block_size)
+    {
+      if (block_size > 1)
+        check(MatSetBlockSize(A, block_size), "MatSetBlockSize");
+      orthonormalize(modes);
+      std::vector<Vec> vecs;
+      for (auto &v : modes)
+        vecs.push_back(v);
+      MatNullSpace null_space = nullptr;
+      check(MatNullSpaceCreate(comm, PETSC_FALSE, vecs.size(), vecs.data(), &null_space),
+            "MatNullSpaceCreate");
+      check(MatSetNearNullSpace(A, null_space), "MatSetNearNullSpace");
+      return null_space;
+    }
   } // namespace
+
+  PC create_gamg_preconditioner(dealii::PETScWrappers::MPI::SparseMatrix        &matrix,
+                                std::vector<dealii::PETScWrappers::MPI::Vector> near_null_space,
+                                const unsigned int block_size, const std::string &petsc_options)
+  {
+    Mat      A    = matrix;
+    MPI_Comm comm = matrix.get_mpi_communicator();
+    PC       pc;
+    check(PCCreate(comm, &pc), "PCCreate");
+    check(PCSetOperators(pc, A, A), "PCSetOperators");
+    check(PCSetType(pc, PCGAMG), "PCSetType(gamg)");
+    MatNullSpace null_space = attach_near_null_space(A, comm, near_null_space, block_size);
+    if (!petsc_options.empty())
+      check(PetscOptionsInsertString(nullptr, petsc_options.c_str()),
+            "PetscOptionsInsertString (Linear solver/PETSc options)");
+    check(PCSetFromOptions(pc), "PCSetFromOptions");
+    check(PCSetUp(pc), "PCSetUp (GAMG)");
+    MatNullSpaceDestroy(&null_space);
+    return pc;
+  }
 
   unsigned int solve_linear_system(dealii::PETScWrappers::MPI::SparseMatrix        &matrix,
                                    dealii::PETScWrappers::MPI::Vector              &solution,
                                    const dealii::PETScWrappers::MPI::Vector        &rhs,
                                    std::vector<dealii::PETScWrappers::MPI::Vector>  near_null_space,
-                                   const LinearSolverSettings                      &settings)
+                                   const LinearSolverSettings                      &settings,
+                                   const unsigned int                               block_size)
   {
     Mat      A = matrix;
     MPI_Comm comm = matrix.get_mpi_communicator();
@@ -51,13 +91,7 @@ namespace compliant
       {
         check(KSPSetType(ksp, KSPCG), "KSPSetType");
         check(PCSetType(pc, PCGAMG), "PCSetType");
-        orthonormalize(near_null_space);
-        std::vector<Vec> vecs;
-        for (auto &v : near_null_space)
-          vecs.push_back(v);
-        check(MatNullSpaceCreate(comm, PETSC_FALSE, vecs.size(), vecs.data(), &null_space),
-              "MatNullSpaceCreate");
-        check(MatSetNearNullSpace(A, null_space), "MatSetNearNullSpace");
+        null_space = attach_near_null_space(A, comm, near_null_space, block_size);
       }
     check(KSPSetTolerances(ksp, settings.relative_tolerance, 1e-300, PETSC_DEFAULT,
                            settings.max_iterations),

@@ -5,6 +5,8 @@
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
+#include <petscpc.h>
+
 #include <string>
 #include <vector>
 
@@ -19,11 +21,21 @@ namespace compliant
   };
 
   // Returns the iteration count; throws std::runtime_error with PETSc's reason on failure.
+  // block_size: DoFs per node when a node's components are numbered together (dim for
+  // FESystem(FE_Q, dim)); GAMG then aggregates nodes instead of single DoFs.
   unsigned int solve_linear_system(dealii::PETScWrappers::MPI::SparseMatrix              &matrix,
                                    dealii::PETScWrappers::MPI::Vector                    &solution,
                                    const dealii::PETScWrappers::MPI::Vector              &rhs,
                                    std::vector<dealii::PETScWrappers::MPI::Vector>       near_null_space,
-                                   const LinearSolverSettings                            &settings);
+                                   const LinearSolverSettings                            &settings,
+                                   unsigned int                                          block_size = 1);
+
+  // A set-up PETSc GAMG preconditioner for the matrix with the given near null space (made
+  // orthonormal here) and block size; extra options (e.g. '-pc_gamg_threshold 0.02') apply.
+  // The caller owns the result (PCDestroy).
+  PC create_gamg_preconditioner(dealii::PETScWrappers::MPI::SparseMatrix        &matrix,
+                                std::vector<dealii::PETScWrappers::MPI::Vector> near_null_space,
+                                unsigned int block_size, const std::string &petsc_options);
   // Number of negative eigenvalues of a symmetric matrix: the inertia of its LDL^T factor
   // (Sylvester's law), from MUMPS. Throws std::runtime_error if PETSc cannot give it.
   unsigned int count_negative_eigenvalues(dealii::PETScWrappers::MPI::SparseMatrix &matrix);

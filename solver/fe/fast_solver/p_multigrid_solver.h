@@ -1,0 +1,68 @@
+// The fast linear solver for elasticity on quadrilaterals/hexahedra: conjugate gradients on the
+// matrix-free operator, preconditioned by a p-multigrid V-cycle (degree p, p-1, ..., 1 on the same
+// mesh, Chebyshev smoothing on the diagonal) whose degree-1 level is solved by one AMG V-cycle
+// (PETSc GAMG with block size and rigid-body modes). Only the degree-1 matrix is ever stored.
+#pragma once
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include "fast_solver/elasticity_operator.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace compliant::fast_solver
+{
+  struct PMultigridSettings
+  {
+    double       relative_tolerance = 1e-10;
+    unsigned int max_iterations     = 500;
+    unsigned int smoothing_degree   = 5;  // Chebyshev polynomial degree per smoothing step
+    double       smoothing_range    = 20; // eigenvalue range Chebyshev damps
+    std::string  petsc_options;           // passed to the coarse GAMG
+  };
+
+  struct PMultigridStatistics
+  {
+    unsigned int                         iterations    = 0;
+    double                               setup_seconds = 0;
+    std::vector<dealii::types::global_dof_index> level_dofs; // coarse to fine
+  };
+
+  template <int dim>
+  class PMultigridSolver
+  {
+  public:
+    // Fills the homogeneous constraints of a level (hanging nodes, supports held at zero); the
+    // object comes cleared and is closed by the caller.
+    using LevelConstraints =
+      std::function<void(const dealii::DoFHandler<dim> &, dealii::AffineConstraints<double> &)>;
+
+    // Builds every level; the mapping and fine DoFHandler must outlive the solver.
+    PMultigridSolver(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &fine_dofs,
+                     const LevelConstraints &level_constraints, const LameParameters &lame,
+                     const PMultigridSettings &settings, MPI_Comm communicator);
+    ~PMultigridSolver();
+
+    // Solves K u = f where u takes the prescribed values of 'constraints' (inhomogeneous).
+    // condensed_rhs is C^T f with zero constrained rows (distribute_local_to_global of the cell
+    // right-hand sides alone). Returns u on owned DoFs with constrained entries zero: the caller
+    // runs constraints.distribute(). Throws dealii::SolverControl::NoConvergence.
+    unsigned int solve(const dealii::PETScWrappers::MPI::Vector &condensed_rhs,
+                       const dealii::AffineConstraints<double>   &constraints,
+                       dealii::PETScWrappers::MPI::Vector         &solution);
+
+    const PMultigridStatistics &statistics() const { return stats; }
+
+  private:
+    struct Levels;
+    std::unique_ptr<Levels> levels;
+    PMultigridSettings      settings;
+    PMultigridStatistics    stats;
+  };
+} // namespace compliant::fast_solver
