@@ -47,7 +47,8 @@ namespace compliant
           if (!problem.statistics.level_dofs.empty())
             {
               std::cout << " (multigrid set-up " << problem.statistics.preconditioner_setup_seconds
-                        << " s; DoFs per degree:";
+                        << " s, " << problem.statistics.coarse_iterations
+                        << " coarse CG iterations; DoFs per degree:";
               for (const auto n : problem.statistics.level_dofs)
                 std::cout << ' ' << n;
               std::cout << ')';
@@ -67,8 +68,11 @@ namespace compliant
       summary.quantities["time_assembly"] = problem.statistics.assembly_seconds;
       summary.quantities["time_solve"]    = problem.statistics.solve_seconds;
       if (!problem.statistics.level_dofs.empty())
-        summary.quantities["time_preconditioner_setup"] =
-          problem.statistics.preconditioner_setup_seconds;
+        {
+          summary.quantities["time_preconditioner_setup"] =
+            problem.statistics.preconditioner_setup_seconds;
+          summary.quantities["solver_coarse_iterations"] = problem.statistics.coarse_iterations;
+        }
       summary.quantities["time_total"]    = timer.wall_time();
 
       finish_run(context, summary, problem.expression_variables(),

@@ -446,6 +446,7 @@ namespace compliant
     try
       {
         statistics.iterations = solver.solve(system_rhs, constraints, x);
+        statistics.coarse_iterations = solver.statistics().coarse_iterations;
       }
     catch (const SolverControl::NoConvergence &e)
       {

@@ -27,6 +27,7 @@ namespace compliant
     double       setup_seconds = 0, assembly_seconds = 0, solve_seconds = 0;
     // Matrix-free p-multigrid: set-up of the levels (inside solve_seconds), DoFs per level.
     double                    preconditioner_setup_seconds = 0;
+    unsigned int              coarse_iterations = 0; // inner CG on degree 1, summed
     std::vector<std::size_t>  level_dofs;
   };
 

@@ -6,20 +6,45 @@
 
 namespace compliant::fast_solver
 {
+  namespace
+  {
+    void check(const PetscErrorCode ierr, const char *what)
+    {
+      if (ierr != 0)
+        throw std::runtime_error(std::string("coarse AMG: PETSc error in ") + what);
+    }
+  } // namespace
+
   AmgCoarseSolver::AmgCoarseSolver(dealii::PETScWrappers::MPI::SparseMatrix         &matrix,
                                    std::vector<dealii::PETScWrappers::MPI::Vector> rigid_body_modes,
-                                   const unsigned int block_size, const std::string &petsc_options)
+                                   const unsigned int block_size, const double relative_tolerance,
+                                   const std::string &petsc_options)
   {
     const auto owned = matrix.locally_owned_range_indices();
     rhs.reinit(owned, matrix.get_mpi_communicator());
     correction.reinit(owned, matrix.get_mpi_communicator());
-    pc = create_gamg_preconditioner(matrix, rigid_body_modes, block_size, petsc_options);
+    PC pc;
+    check(KSPCreate(matrix.get_mpi_communicator(), &ksp), "KSPCreate");
+    check(KSPSetOperators(ksp, matrix, matrix), "KSPSetOperators");
+    check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    configure_gamg(pc, matrix, std::move(rigid_body_modes), block_size, petsc_options);
+    check(PCSetFromOptions(pc), "PCSetFromOptions");
+    if (relative_tolerance > 0)
+      {
+        check(KSPSetType(ksp, KSPCG), "KSPSetType(cg)");
+        check(KSPSetTolerances(ksp, relative_tolerance, 1e-300, PETSC_DEFAULT, 100),
+              "KSPSetTolerances");
+        check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+      }
+    else
+      check(KSPSetType(ksp, KSPPREONLY), "KSPSetType(preonly)");
+    check(KSPSetUp(ksp), "KSPSetUp (GAMG set-up)");
   }
 
   AmgCoarseSolver::~AmgCoarseSolver()
   {
-    if (pc)
-      PCDestroy(&pc);
+    if (ksp)
+      KSPDestroy(&ksp);
   }
 
   void AmgCoarseSolver::operator()(const unsigned int, VectorType &dst, const VectorType &src) const
@@ -33,8 +58,10 @@ namespace compliant::fast_solver
         values[i] = src.local_element(i);
       VecRestoreArray(rhs, &values);
     }
-    if (PCApply(pc, rhs, correction) != 0)
-      throw std::runtime_error("coarse AMG (PETSc GAMG) failed to apply");
+    check(KSPSolve(ksp, rhs, correction), "KSPSolve");
+    PetscInt iterations = 0;
+    KSPGetIterationNumber(ksp, &iterations);
+    total_iterations += iterations;
     const PetscScalar *values;
     VecGetArrayRead(correction, &values);
     for (unsigned int i = 0; i < n; ++i)

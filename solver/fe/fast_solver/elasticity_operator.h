@@ -60,9 +60,14 @@ namespace compliant::fast_solver
 
   private:
     void apply_cells(VectorType &dst, const VectorType &src, bool plain) const;
+    // The diagonal from shape-function gradients alone (no sum-factorized unit vectors): exact
+    // when no constraint has entries (no hanging nodes, no ties), which is the common case.
+    void add_unconstrained_diagonal(VectorType &diagonal) const;
 
     std::shared_ptr<dealii::MatrixFree<dim, Number>> data;
     const dealii::AffineConstraints<Number>         *constraints = nullptr;
+    const dealii::Mapping<dim>                      *mapping     = nullptr;
+    bool                                             constraints_have_entries = false;
     unsigned int                                     fe_degree   = 1;
     // Per cell batch: the Lame parameters of each lane's cell.
     std::vector<dealii::VectorizedArray<Number>> lambda, mu;

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -103,18 +104,25 @@ namespace compliant::fast_solver
   } // namespace
 
   template <int dim, typename Number>
-  void ElasticityOperator<dim, Number>::reinit(const Mapping<dim>              &mapping,
+  void ElasticityOperator<dim, Number>::reinit(const Mapping<dim>              &mapping_in,
                                                const DoFHandler<dim>           &dof_handler,
                                                const AffineConstraints<Number> &constraints_in,
                                                const LameParameters            &lame)
   {
     fe_degree   = dof_handler.get_fe().degree;
     constraints = &constraints_in;
+    mapping     = &mapping_in;
+    constraints_have_entries = false;
+    for (const auto &line : constraints_in.get_lines())
+      if (!line.entries.empty())
+        constraints_have_entries = true;
+    constraints_have_entries = Utilities::MPI::logical_or(constraints_have_entries,
+                                                          dof_handler.get_communicator());
     typename MatrixFree<dim, Number>::AdditionalData additional_data;
     additional_data.tasks_parallel_scheme = MatrixFree<dim, Number>::AdditionalData::none;
     additional_data.mapping_update_flags  = update_gradients | update_JxW_values;
     data = std::make_shared<MatrixFree<dim, Number>>();
-    data->reinit(mapping, dof_handler, constraints_in, QGauss<1>(fe_degree + 1), additional_data);
+    data->reinit(mapping_in, dof_handler, constraints_in, QGauss<1>(fe_degree + 1), additional_data);
 
     const unsigned int n_batches = data->n_cell_batches();
     lambda.assign(n_batches, VectorizedArray<Number>());
@@ -185,13 +193,49 @@ namespace compliant::fast_solver
   void ElasticityOperator<dim, Number>::compute_inverse_diagonal(VectorType &inverse_diagonal) const
   {
     initialize_dof_vector(inverse_diagonal);
-    dispatch<dim, Number>(fe_degree, [&](auto kernel) {
-      decltype(kernel)::diagonal(*data, inverse_diagonal, lambda, mu);
-    });
+    if (constraints_have_entries)
+      dispatch<dim, Number>(fe_degree, [&](auto kernel) {
+        decltype(kernel)::diagonal(*data, inverse_diagonal, lambda, mu);
+      });
+    else
+      add_unconstrained_diagonal(inverse_diagonal);
     for (const unsigned int i : constrained_local_dofs)
       inverse_diagonal.local_element(i) = 1;
     for (auto &value : inverse_diagonal)
       value = value > 0 ? 1 / value : 1;
+  }
+
+  template <int dim, typename Number>
+  void ElasticityOperator<dim, Number>::add_unconstrained_diagonal(VectorType &diagonal) const
+  {
+    // Shape function i has one nonzero component c: eps_i : eps_i = (|grad phi|^2 + d_c phi^2) / 2
+    // and div phi_i = d_c phi, so K_ii = sum_q JxW (mu |grad phi|^2 + (lambda + mu) d_c phi^2).
+    const DoFHandler<dim>  &dof_handler = data->get_dof_handler();
+    const auto             &fe          = dof_handler.get_fe();
+    FEValues<dim>           fe_values(*mapping, fe, QGauss<dim>(fe_degree + 1),
+                            update_gradients | update_JxW_values);
+    const unsigned int      n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    for (unsigned int batch = 0; batch < data->n_cell_batches(); ++batch)
+      for (unsigned int lane = 0; lane < data->n_active_entries_per_cell_batch(batch); ++lane)
+        {
+          const auto cell = data->get_cell_iterator(batch, lane);
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dofs);
+          const double l = lambda[batch][lane], m = mu[batch][lane];
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int c     = fe.system_to_component_index(i).first;
+              double             value = 0;
+              for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+                {
+                  const Tensor<1, dim> grad = fe_values.shape_grad_component(i, q, c);
+                  value += (m * grad.norm_square() + (l + m) * grad[c] * grad[c]) * fe_values.JxW(q);
+                }
+              diagonal(dofs[i]) += value;
+            }
+        }
+    diagonal.compress(VectorOperation::add);
   }
 
   template <int dim, typename Number>

@@ -107,7 +107,7 @@ namespace compliant::fast_solver
     L.operators[0]->compute_matrix(L.coarse_matrix, communicator);
     L.coarse_solver = std::make_unique<AmgCoarseSolver>(
       L.coarse_matrix, rigid_body_modes(mapping, *L.dofs[0], communicator), dim,
-      settings.petsc_options);
+      settings.coarse_tolerance, settings.petsc_options);
     stats.setup_seconds = timer.wall_time();
   }
 
@@ -152,8 +152,11 @@ namespace compliant::fast_solver
                                                                                  *L.transfer);
     SolverControl        control(settings.max_iterations,
                           settings.relative_tolerance * rhs.l2_norm(), false, false);
-    SolverCG<VectorType> cg(control);
-    cg.solve(fine, correction, rhs, preconditioner);
+    if (settings.coarse_tolerance > 0)
+      SolverFlexibleCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);
+    else
+      SolverCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);
+    stats.coarse_iterations = L.coarse_solver->inner_iterations();
 
     PetscScalar *values;
     VecGetArray(solution, &values);
@@ -167,3 +170,4 @@ namespace compliant::fast_solver
   template class PMultigridSolver<2>;
   template class PMultigridSolver<3>;
 } // namespace compliant::fast_solver
+

@@ -46,24 +46,17 @@ namespace compliant
     }
   } // namespace
 
-  PC create_gamg_preconditioner(dealii::PETScWrappers::MPI::SparseMatrix        &matrix,
-                                std::vector<dealii::PETScWrappers::MPI::Vector> near_null_space,
-                                const unsigned int block_size, const std::string &petsc_options)
+  void configure_gamg(PC pc, dealii::PETScWrappers::MPI::SparseMatrix &matrix,
+                      std::vector<dealii::PETScWrappers::MPI::Vector> near_null_space,
+                      const unsigned int block_size, const std::string &petsc_options)
   {
-    Mat      A    = matrix;
-    MPI_Comm comm = matrix.get_mpi_communicator();
-    PC       pc;
-    check(PCCreate(comm, &pc), "PCCreate");
-    check(PCSetOperators(pc, A, A), "PCSetOperators");
     check(PCSetType(pc, PCGAMG), "PCSetType(gamg)");
-    MatNullSpace null_space = attach_near_null_space(A, comm, near_null_space, block_size);
+    MatNullSpace null_space =
+      attach_near_null_space(matrix, matrix.get_mpi_communicator(), near_null_space, block_size);
+    MatNullSpaceDestroy(&null_space); // the matrix keeps its own reference
     if (!petsc_options.empty())
       check(PetscOptionsInsertString(nullptr, petsc_options.c_str()),
             "PetscOptionsInsertString (Linear solver/PETSc options)");
-    check(PCSetFromOptions(pc), "PCSetFromOptions");
-    check(PCSetUp(pc), "PCSetUp (GAMG)");
-    MatNullSpaceDestroy(&null_space);
-    return pc;
   }
 
   unsigned int solve_linear_system(dealii::PETScWrappers::MPI::SparseMatrix        &matrix,
@@ -80,7 +73,6 @@ namespace compliant
     check(KSPCreate(comm, &ksp), "KSPCreate");
     check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
     check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    MatNullSpace null_space = nullptr;
     if (settings.method == "direct")
       {
         check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
@@ -90,8 +82,7 @@ namespace compliant
     else
       {
         check(KSPSetType(ksp, KSPCG), "KSPSetType");
-        check(PCSetType(pc, PCGAMG), "PCSetType");
-        null_space = attach_near_null_space(A, comm, near_null_space, block_size);
+        configure_gamg(pc, matrix, near_null_space, block_size, "");
       }
     check(KSPSetTolerances(ksp, settings.relative_tolerance, 1e-300, PETSC_DEFAULT,
                            settings.max_iterations),
@@ -106,8 +97,6 @@ namespace compliant
     PetscInt           iterations;
     KSPGetConvergedReason(ksp, &reason);
     KSPGetIterationNumber(ksp, &iterations);
-    if (null_space)
-      MatNullSpaceDestroy(&null_space);
     KSPDestroy(&ksp);
     if (reason < 0)
       throw std::runtime_error("linear solver (" + settings.method + ") did not converge: PETSc "

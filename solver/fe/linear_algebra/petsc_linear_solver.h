@@ -30,12 +30,12 @@ namespace compliant
                                    const LinearSolverSettings                            &settings,
                                    unsigned int                                          block_size = 1);
 
-  // A set-up PETSc GAMG preconditioner for the matrix with the given near null space (made
-  // orthonormal here) and block size; extra options (e.g. '-pc_gamg_threshold 0.02') apply.
-  // The caller owns the result (PCDestroy).
-  PC create_gamg_preconditioner(dealii::PETScWrappers::MPI::SparseMatrix        &matrix,
-                                std::vector<dealii::PETScWrappers::MPI::Vector> near_null_space,
-                                unsigned int block_size, const std::string &petsc_options);
+  // Makes pc a PETSc GAMG preconditioner for the matrix (already the PC's operator) with the given
+  // near null space (made orthonormal here) and block size; extra options (e.g.
+  // '-pc_gamg_threshold 0.02') apply. Set-up happens at the first use.
+  void configure_gamg(PC pc, dealii::PETScWrappers::MPI::SparseMatrix &matrix,
+                      std::vector<dealii::PETScWrappers::MPI::Vector> near_null_space,
+                      unsigned int block_size, const std::string &petsc_options);
   // Number of negative eigenvalues of a symmetric matrix: the inertia of its LDL^T factor
   // (Sylvester's law), from MUMPS. Throws std::runtime_error if PETSc cannot give it.
   unsigned int count_negative_eigenvalues(dealii::PETScWrappers::MPI::SparseMatrix &matrix);
