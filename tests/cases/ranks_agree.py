@@ -21,7 +21,7 @@ def kind(key):
 scales = {}
 for key, value in list(one.items()) + list(two.items()):
     scales[kind(key)] = max(scales.get(kind(key), 0.0), abs(value))
-skip = ("time_", "n_ranks", "solver_iterations")
+skip = ("time_", "n_ranks", "solver_", "memory_")  # cost figures, not results
 bad = 0
 for key in sorted(one):
     if key.startswith(skip):

@@ -15,6 +15,7 @@
 #include "elasticity/von_mises.h"
 #include "input/spec_list.h"
 #include "linear_algebra/petsc_linear_solver.h"
+#include "linear_algebra/rigid_body_modes.h"
 #include "mesh/mesh_reader.h"
 
 #include <cmath>
@@ -261,7 +262,7 @@ namespace compliant
     std::vector<types::global_dof_index> dofs(n);
     std::vector<Tensor<2, dim>>          grad_u(quadrature->size()), face_grad_u(face_quadrature->size());
     std::vector<double>                  p_values(quadrature->size());
-    std::vector<Tensor<2, dim>>          grad_phi(n);
+    std::vector<Tensor<2, dim>>          grad_phi(n), grad_phi_S(n);
     std::vector<SymmetricTensor<2, dim>> dE(n), C_dE(n);
     std::vector<Tensor<1, dim>>          phi(n);
     std::vector<double>                  q_phi(n);
@@ -307,6 +308,7 @@ namespace compliant
                 }
               const double JxW      = fe_values.JxW(q) * thickness;
               const auto   Ci       = invert(unit_symmetric_tensor<dim>() + 2 * E);
+              const Tensor<2, dim> S    = response.S;
               for (unsigned int i = 0; i < n; ++i)
                 {
                   if (is_u[i])
@@ -315,6 +317,7 @@ namespace compliant
                       phi[i]      = fe_values[displacement].value(i, q);
                       dE[i]       = sym(transpose(F) * grad_phi[i]);
                       C_dE[i]     = response.tangent * dE[i];
+                      grad_phi_S[i] = grad_phi[i] * S; // geometric stiffness, once per i
                     }
                   else
                     q_phi[i] = fe_values[pressure].value(i, q);
@@ -327,12 +330,13 @@ namespace compliant
                     cell_rhs(i) -= (response.log_J - p_values[q] / law.lambda()) * q_phi[i] * JxW;
                   if (!with_matrix)
                     continue;
-                  for (unsigned int j = 0; j < n; ++j)
+                  // The volume tangent is symmetric: the lower triangle, mirrored after the
+                  // quadrature loop (the follower-pressure part below is not symmetric).
+                  for (unsigned int j = 0; j <= i; ++j)
                     {
                       double k = 0;
                       if (is_u[i] && is_u[j])
-                        k = dE[i] * C_dE[j] +
-                            scalar_product(grad_phi[i] * Tensor<2, dim>(response.S), grad_phi[j]);
+                        k = dE[i] * C_dE[j] + scalar_product(grad_phi_S[i], grad_phi[j]);
                       else if (is_u[i])
                         k = (dE[i] * Ci) * q_phi[j];
                       else if (is_u[j])
@@ -343,6 +347,10 @@ namespace compliant
                     }
                 }
             }
+          if (with_matrix)
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < i; ++j)
+                cell_matrix(j, i) = cell_matrix(i, j);
 
           for (const auto f : cell->face_indices())
             {
@@ -445,6 +453,16 @@ namespace compliant
     ghosted = solution;
     const auto homogeneous = make_constraints(target, true, ghosted);
     LinearSolverSettings direct{"direct", 1e-12, 1, parameters.petsc_options};
+    // Newton steps of large 3D displacement models: CG + GAMG on the tangent (block size,
+    // rigid-body modes of the reference configuration as near null space), MUMPS otherwise, and
+    // MUMPS again if CG fails (an indefinite tangent near a limit point breaks CG).
+    const std::string &method = parameters.solver_method;
+    const bool iterative = !mixed && !iterative_failed &&
+                           (method == "cg-amg" || method == "matrix-free" ||
+                            (method == "auto" && dim == 3 && dof_handler.n_dofs() >= 30000));
+    LinearSolverSettings amg{"cg-amg", 1e-10, 500, parameters.petsc_options};
+    const auto modes = iterative ? rigid_body_modes(*mapping, dof_handler, communicator) :
+                                   std::vector<PETScWrappers::MPI::Vector>();
 
     // Force scale for the convergence test: internal forces including the reactions.
     auto force_norm = [&](const PETScWrappers::MPI::Vector &state) {
@@ -481,7 +499,22 @@ namespace compliant
             if (!std::isfinite(r))
               throw StepFailure("the residual is not finite");
             du = 0;
-            solve_linear_system(tangent, du, rhs, {}, direct);
+            if (iterative && !iterative_failed)
+              try
+                {
+                  total_linear_iterations += solve_linear_system(tangent, du, rhs, modes, amg, dim);
+                }
+              catch (const std::runtime_error &e)
+                {
+                  iterative_failed = true;
+                  if (Utilities::MPI::this_mpi_process(communicator) == 0)
+                    std::cout << "Linear solver: CG + GAMG failed on the tangent (" << e.what()
+                              << "); MUMPS from here on" << std::endl;
+                  du = 0;
+                  solve_linear_system(tangent, du, rhs, {}, direct);
+                }
+            else
+              solve_linear_system(tangent, du, rhs, {}, direct);
             ++total_linear_solves;
             constraints.distribute(du);
             // Backtracking only against a step that inverts elements or blows the residual up
