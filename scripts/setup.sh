@@ -3,6 +3,7 @@
 #   run   -> run the default case on 2 MPI ranks
 #   test  -> run the whole CTest suite
 #   build -> stop after the build
+#   peers -> also install the peer codes for cases/benchmarks (FEniCSx, CalculiX), then build
 set -euo pipefail
 mode=${1:-run}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -10,6 +11,8 @@ build=${BUILD_DIR:-$root/build}
 
 packages=(cmake g++ make ccache pkg-config libdeal.ii-dev gmsh libgmsh-dev openmpi-bin libopenmpi-dev
           python3-matplotlib python3-h5py python3-numpy numdiff googletest libgtest-dev)
+# Benchmarks only, never the tests: the same problems in FEniCSx (dolfinx) and CalculiX.
+if [ "$mode" = peers ]; then packages+=(calculix-ccx python3-dolfinx); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -31,12 +34,12 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j "$jobs"
 
 case "$mode" in
-  build) ;;
+  build|peers) ;;
   run)
     cd "$root"
     mpirun -np 2 "$build/solver/fe/compliant" cases/flexure_hinge.prm ;;
   test)
     cd "$build"
     ctest --output-on-failure -j "$jobs" ;;
-  *) echo "usage: scripts/setup.sh [run|test|build]" >&2; exit 2 ;;
+  *) echo "usage: scripts/setup.sh [run|test|build|peers]" >&2; exit 2 ;;
 esac

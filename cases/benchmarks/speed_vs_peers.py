@@ -1,0 +1,206 @@
+#!/usr/bin/python3
+"""Speed against accuracy, this solver against FEniCSx and CalculiX on the same machine in the same
+run (issue 11). The cantilever of cases/benchmarks/cantilever.prm on n x n x 10n hexahedra: ours
+(Q2; each linear-solver method), FEniCSx (Q2 Lagrange, CG + GAMG with block size and rigid-body
+modes), CalculiX (C3D20R, SPOOLES, 2 threads). For each mesh the codes run one after another, so
+they share the machine's load. Wall time is the whole process as a user sees it (mpirun to exit).
+
+The reference tip deflection is extrapolated from our three finest Q2 meshes (Richardson with the
+observed order); every code's error is against it.
+
+  scripts/setup.sh peers        # once: installs calculix-ccx and python3-dolfinx, builds
+  /usr/bin/python3 cases/benchmarks/speed_vs_peers.py [--n 2,4,6,8,12,16] [--methods auto,cg-amg,direct]
+
+Writes cases/benchmarks/cantilever_speed.{csv,md,png}."""
+import argparse
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+SOLVER = os.environ.get("COMPLIANT_SOLVER", os.path.join(ROOT, "build", "solver", "fe", "compliant"))
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+def run_ours(n, method, ranks):
+    out = tempfile.mkdtemp(prefix="bench-")
+    cmd = ["mpirun", "-np", str(ranks), SOLVER, os.path.join(HERE, "cantilever.prm"),
+           "--set", "Geometry/Parameters/ny=%d" % n, "--set", "Geometry/Parameters/nz=%d" % n,
+           "--set", "Linear solver/Method=" + method, "--set", "Output/Directory=" + out]
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, capture_output=True, text=True, env=ENV)
+    wall = time.perf_counter() - start
+    if proc.returncode != 0:
+        shutil.rmtree(out, ignore_errors=True)
+        return {"skipped": proc.stderr.strip().splitlines()[-1] if proc.stderr.strip() else "failed"}
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    shutil.rmtree(out, ignore_errors=True)
+    q = summary["quantities"]
+    return {"dofs": q["n_dofs"], "qoi": -q["displacement_tip_z"], "wall_s": wall,
+            "solve_s": q["time_solve"], "iterations": q["solver_iterations"],
+            "memory_mb": q.get("memory_peak_max_rank_mb", float("nan")),
+            "method": summary["settings"]["solver"]}
+
+
+def run_fenicsx(n, ranks):
+    cmd = ["mpirun", "-np", str(ranks), "/usr/bin/python3", os.path.join(HERE, "peers", "fenicsx_cantilever.py"), str(n)]
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, capture_output=True, text=True, env=ENV)
+    wall = time.perf_counter() - start
+    if proc.returncode != 0:
+        return {"skipped": "FEniCSx failed: " + proc.stderr.strip()[-300:]}
+    r = json.loads([l for l in proc.stdout.splitlines() if l.startswith("{")][-1])
+    return {"dofs": r["dofs"], "qoi": -r["qoi"], "wall_s": wall, "solve_s": r["solve_s"],
+            "iterations": r["iterations"], "memory_mb": r["memory_mb"]}
+
+
+def run_calculix(n):
+    work = tempfile.mkdtemp(prefix="ccx-")
+    proc = subprocess.run(["/usr/bin/python3", os.path.join(HERE, "peers", "calculix_cantilever.py"), str(n), work],
+                          capture_output=True, text=True)
+    shutil.rmtree(work, ignore_errors=True)
+    if proc.returncode != 0:
+        return {"skipped": "CalculiX failed: " + proc.stderr.strip()[-300:]}
+    r = json.loads(proc.stdout.strip().splitlines()[-1])
+    # ccx does not report its solve separately; its wall time is the whole process.
+    return {"dofs": r["dofs"], "qoi": -r["qoi"], "wall_s": r["wall_s"], "solve_s": float("nan"),
+            "iterations": 1, "memory_mb": r["memory_mb"]}
+
+
+def fit_slope(points):
+    """Least-squares slope of log(time) against log(DoFs)."""
+    if len(points) < 2:
+        return float("nan")
+    xs = [math.log(d) for d, _ in points]
+    ys = [math.log(t) for _, t in points]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+
+
+def time_at_error(rows, target):
+    """Wall time at a given error, interpolated log-log between the two bracketing meshes."""
+    pts = sorted((r["error"], r["wall_s"]) for r in rows if r["error"] > 0)
+    for (e0, t0), (e1, t1) in zip(pts, pts[1:]):
+        if e0 <= target <= e1:
+            w = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            return math.exp(math.log(t0) + w * (math.log(t1) - math.log(t0)))
+    return float("nan")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--n", default="2,4,6,8,12,16", help="cells across the section (mesh ladder)")
+    parser.add_argument("--methods", default="auto,cg-amg,direct", help="our Linear solver/Method values")
+    parser.add_argument("--peers", default="fenicsx,calculix")
+    parser.add_argument("--ranks", type=int, default=2)
+    parser.add_argument("--direct-max-dofs", type=float, default=1.5e5, help="MUMPS grows fast: skip above")
+    parser.add_argument("--amg-max-dofs", type=float, default=5e5)
+    parser.add_argument("--peer-max-n", type=int, default=12)
+    parser.add_argument("--out", default=HERE)
+    args = parser.parse_args()
+    ladder = [int(v) for v in args.n.split(",")]
+    methods = [m for m in args.methods.split(",") if m]
+    peers = [p for p in args.peers.split(",") if p]
+    if "fenicsx" in peers:  # warm FEniCSx's JIT cache so no run pays for compiling forms
+        run_fenicsx(1, 1)
+    rows = []
+    for n in ladder:
+        dofs_q2 = 3 * (2 * n + 1) ** 2 * (20 * n + 1)
+        for m in methods:
+            cap = {"direct": args.direct_max_dofs, "cg-amg": args.amg_max_dofs}.get(m, float("inf"))
+            if dofs_q2 > cap:
+                continue
+            r = run_ours(n, m, args.ranks)
+            r.update(code="compliant", variant=m, n=n)
+            rows.append(r)
+            print(json.dumps(r), flush=True)
+        if n <= args.peer_max_n:
+            for peer in peers:
+                r = run_fenicsx(n, args.ranks) if peer == "fenicsx" else run_calculix(n)
+                r.update(code=peer, variant="gamg" if peer == "fenicsx" else "spooles", n=n)
+                rows.append(r)
+                print(json.dumps(r), flush=True)
+    done = [r for r in rows if "skipped" not in r]
+    ours = sorted({r["n"]: r for r in done if r["code"] == "compliant"}.values(), key=lambda r: r["n"])
+    # Richardson on the three finest meshes of a halving ladder (n, 2n, 4n) if present, else the finest three.
+    q = {r["n"]: r["qoi"] for r in ours}
+    triple = next(((a, 2 * a, 4 * a) for a in sorted(q, reverse=True) if 4 * a in q and 2 * a in q), None)
+    if triple is None:
+        ns = sorted(q)[-3:]
+        triple = tuple(ns)
+    q0, q1, q2 = (q[t] for t in triple)
+    ratio = triple[1] / triple[0]
+    order = math.log(abs((q1 - q0) / (q2 - q1))) / math.log(ratio) if q2 != q1 else float("nan")
+    reference = q2 + (q2 - q1) / (ratio ** order - 1)
+    for r in done:
+        r["error"] = abs(r["qoi"] - reference) / abs(reference)
+    print("\nReference tip deflection %.7f (Richardson on our n = %s, observed order %.2f)" % (reference, triple, order))
+
+    os.makedirs(args.out, exist_ok=True)
+    keys = ["code", "variant", "n", "dofs", "qoi", "error", "wall_s", "solve_s", "iterations", "memory_mb"]
+    with open(os.path.join(args.out, "cantilever_speed.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys + ["method", "skipped"], extrasaction="ignore")
+        w.writeheader()
+        w.writerows(rows)
+    lines = ["| code | method | n | DoFs | tip | error | wall (s) | solve (s) | iterations | peak MB/rank |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in done:
+        lines.append("| %s | %s | %d | %d | %.6f | %.1e | %.2f | %s | %d | %.0f |" % (
+            r["code"], r["variant"], r["n"], r["dofs"], r["qoi"], r["error"], r["wall_s"],
+            "-" if math.isnan(r["solve_s"]) else "%.2f" % r["solve_s"], r["iterations"], r["memory_mb"]))
+    groups = {}
+    for r in done:
+        groups.setdefault((r["code"], r["variant"]), []).append(r)
+    lines += ["", "Solve time against DoFs (least-squares slope from 1.5e4 DoFs up):", ""]
+    for (code, variant), rs in groups.items():
+        pts = [(r["dofs"], r["solve_s"] if not math.isnan(r["solve_s"]) else r["wall_s"]) for r in rs if r["dofs"] >= 1.5e4]
+        lines.append("- %s %s: slope %.2f over %d meshes%s" % (code, variant, fit_slope(pts), len(pts),
+                                                               " (whole process)" if code == "calculix" else ""))
+    ours_fast = groups.get(("compliant", "auto")) or groups.get(("compliant", methods[0]), [])
+    lines += ["", "Wall time at equal accuracy (log-log interpolation between meshes), peer / ours (%s):" % (
+        ours_fast[0]["variant"] if ours_fast else "-"), ""]
+    for target in (1e-3, 3e-4, 1e-4):
+        ours_t = time_at_error(ours_fast, target)
+        cells = []
+        for (code, variant), rs in groups.items():
+            if code == "compliant":
+                continue
+            cells.append("%s %.1f" % (code, time_at_error(rs, target) / ours_t))
+        lines.append("- error %.0e: ours %.2f s; %s" % (target, ours_t, ", ".join(cells)))
+    skipped = [r for r in rows if "skipped" in r]
+    for r in skipped:
+        lines.append("- skipped %s %s n=%d: %s" % (r["code"], r["variant"], r["n"], r["skipped"]))
+    text = "\n".join(lines)
+    with open(os.path.join(args.out, "cantilever_speed.md"), "w") as f:
+        f.write("Reference tip deflection %.7f (Richardson on our n = %s, observed order %.2f); "
+                "%d ranks.\n\n" % (reference, triple, order, args.ranks) + text + "\n")
+    print(text)
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for (code, variant), rs in groups.items():
+        rs = sorted(rs, key=lambda r: r["dofs"])
+        ax.loglog([r["wall_s"] for r in rs], [r["error"] for r in rs], "o-" if code == "compliant" else "s--",
+                  label="%s, %s" % (code, variant))
+    ax.set_xlabel("wall time, whole process (s), %d ranks" % args.ranks)
+    ax.set_ylabel("relative error of the tip deflection")
+    ax.set_title("3D cantilever, n x n x 10n hexahedra, n = %s" % args.n)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(args.out, "cantilever_speed.png"), dpi=120)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
