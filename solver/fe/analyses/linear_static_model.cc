@@ -1,0 +1,73 @@
+#include "analyses/linear_static_model.h"
+
+#include <deal.II/base/timer.h>
+
+#include <iostream>
+
+namespace compliant
+{
+  template <int dim>
+  LinearStaticModel<dim> solve_linear_static_model(const RunContext &context, const CaseParameters &p)
+  {
+    MPI_Comm               comm = context.communicator;
+    const bool             root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+    dealii::Timer          timer;
+    LinearStaticModel<dim> model;
+    model.problem      = std::make_unique<LinearElasticProblem<dim>>(p, context.geometry, comm);
+    auto &problem      = *model.problem;
+    problem.matrix_free_allowed = true; // one solve of K u = f: no stored matrix needed
+    try
+      {
+        parse_checks(p.checks);
+        problem.setup();
+        validate_quantity_requests(problem);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("case file '" + p.case_file + "': " + e.what());
+      }
+    if (report_mesh_and_stop_if_check(context, problem.triangulation.n_active_cells(),
+                                      problem.dof_handler.n_dofs(), ""))
+      {
+        model.stopped_for_check = true;
+        return model;
+      }
+
+    problem.assemble();
+    problem.solve();
+    if (root)
+      {
+        if (!problem.solver_note.empty())
+          std::cout << "Linear solver: " << problem.solver_note << std::endl;
+        std::cout << "Solved: " << problem.statistics.iterations << " iterations ("
+                  << problem.solver_method << "), assembly " << problem.statistics.assembly_seconds
+                  << " s, solve " << problem.statistics.solve_seconds << " s";
+        if (!problem.statistics.level_dofs.empty())
+          {
+            std::cout << " (multigrid set-up " << problem.statistics.preconditioner_setup_seconds
+                      << " s, " << problem.statistics.coarse_iterations
+                      << " coarse CG iterations; DoFs per degree:";
+            for (const auto n : problem.statistics.level_dofs)
+              std::cout << ' ' << n;
+            std::cout << ')';
+          }
+        std::cout << std::endl;
+      }
+    model.quantities                       = compute_quantities(problem);
+    model.quantities["solver_iterations"]  = problem.statistics.iterations;
+    model.quantities["time_setup"]         = problem.statistics.setup_seconds;
+    model.quantities["time_assembly"]      = problem.statistics.assembly_seconds;
+    model.quantities["time_solve"]         = problem.statistics.solve_seconds;
+    if (!problem.statistics.level_dofs.empty())
+      {
+        model.quantities["time_preconditioner_setup"] = problem.statistics.preconditioner_setup_seconds;
+        model.quantities["solver_coarse_iterations"]  = problem.statistics.coarse_iterations;
+      }
+    model.seconds                    = timer.wall_time();
+    model.quantities["time_total"]   = model.seconds;
+    return model;
+  }
+
+  template LinearStaticModel<2> solve_linear_static_model<2>(const RunContext &, const CaseParameters &);
+  template LinearStaticModel<3> solve_linear_static_model<3>(const RunContext &, const CaseParameters &);
+} // namespace compliant

@@ -1,0 +1,26 @@
+// One linear static model built, solved and evaluated, without output: what the 'linear static'
+// analysis runs once and the model ladder runs per rung.
+#pragma once
+
+#include "analyses/analysis.h"
+#include "elasticity/linear_elastic_problem.h"
+#include "quantities/quantities.h"
+
+#include <memory>
+
+namespace compliant
+{
+  template <int dim>
+  struct LinearStaticModel
+  {
+    std::unique_ptr<LinearElasticProblem<dim>> problem;
+    Quantities                                 quantities; // with DoFs, iterations and times
+    double                                     seconds = 0; // set-up to quantities
+    bool                                       stopped_for_check = false;
+  };
+
+  // Case-file mistakes throw InputError naming the case file; with --check it stops after the
+  // set-up (stopped_for_check). Prints the mesh and solver lines on rank 0.
+  template <int dim>
+  LinearStaticModel<dim> solve_linear_static_model(const RunContext &context, const CaseParameters &parameters);
+} // namespace compliant

@@ -1,0 +1,286 @@
+#include "ladder/model_ladder.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/fe/fe_values.h>
+
+#include "analyses/linear_static_model.h"
+#include "input/spec_list.h"
+#include "quantities/comparison.h"
+#include "ladder/error_estimate.h"
+#include "output/field_output.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace compliant
+{
+  void declare_target_settings(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii;
+    prm.enter_subsection("Target");
+    prm.declare_entry("Relative error", "0", Patterns::Double(0, 100),
+                      "Percent. 0: solve the model as set. > 0: the model ladder refines uniformly "
+                      "until the Richardson estimate of every target quantity's discretization "
+                      "error is below this, and moves to finite strain when the rotations of the "
+                      "linear answer make the geometric error (theta^2) larger (linear static only).");
+    prm.declare_entry("Quantities", "", Patterns::Anything(),
+                      "Reported quantities the target applies to, comma-separated, e.g. "
+                      "'rotational_stiffness_drive, displacement_tip_y'. Empty: the quantities "
+                      "named on the left of Comparison/Checks.");
+    prm.declare_entry("Allow finite strain", "true", Patterns::Bool(),
+                      "false: stay linear even when the rotations call for finite strain (a linear "
+                      "benchmark); the ladder still prints the geometric estimate.");
+    prm.declare_entry("Maximum refinements", "4", Patterns::Integer(1, 8),
+                      "Uniform refinements the ladder may add to Discretization/Global refinements.");
+    prm.leave_subsection();
+  }
+
+  TargetSettings read_target_settings(dealii::ParameterHandler &prm)
+  {
+    TargetSettings t;
+    prm.enter_subsection("Target");
+    t.relative_error  = prm.get_double("Relative error") / 100;
+    t.max_refinements = prm.get_integer("Maximum refinements");
+    t.allow_finite_strain = prm.get_bool("Allow finite strain");
+    for (auto name : split(prm.get("Quantities"), ','))
+      {
+        name.erase(0, name.find_first_not_of(" \t"));
+        name.erase(name.find_last_not_of(" \t") + 1);
+        if (!name.empty())
+          t.quantities.push_back(name);
+      }
+    prm.leave_subsection();
+    return t;
+  }
+
+  namespace
+  {
+    // Largest rotation of material lines, |skew(grad u)| (radians, infinitesimal), over the
+    // quadrature points of every cell: what makes a linear answer wrong at order theta^2.
+    template <int dim>
+    double largest_rotation(const LinearElasticProblem<dim> &problem)
+    {
+      using namespace dealii;
+      FEValues<dim> fe_values(*problem.mapping, *problem.fe, *problem.quadrature, update_gradients);
+      const FEValuesExtractors::Vector u(0);
+      std::vector<Tensor<2, dim>>      grad(fe_values.n_quadrature_points);
+      double                           largest = 0;
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[u].get_function_gradients(problem.solution, grad);
+            for (const auto &g : grad)
+              {
+                const Tensor<2, dim> w = 0.5 * (g - transpose(g));
+                largest = std::max(largest, std::sqrt(0.5 * scalar_product(w, w)));
+              }
+          }
+      return Utilities::MPI::max(largest, problem.communicator);
+    }
+
+    std::vector<std::string> check_quantities(const std::string &checks)
+    {
+      std::vector<std::string> names;
+      for (const auto &c : parse_checks(checks))
+        names.push_back(c.quantity);
+      return names;
+    }
+
+    std::string percent(double fraction)
+    {
+      std::ostringstream s;
+      s << std::setprecision(2) << 100 * fraction << " %";
+      return s.str();
+    }
+  } // namespace
+
+  template <int dim>
+  int run_model_ladder(const RunContext &context, const TargetSettings &target)
+  {
+    const auto &p    = context.parameters;
+    const bool  root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
+    auto        names = target.quantities.empty() ? check_quantities(p.checks) : target.quantities;
+    if (names.empty())
+      throw InputError("case file '" + p.case_file + "', Target/Quantities: name the quantities the "
+                       "target applies to (or give Comparison/Checks)");
+    dealii::Timer total;
+    struct Rung
+    {
+      unsigned int refinements;
+      double       dofs, seconds;
+      std::map<std::string, double>        values;
+      std::map<std::string, ErrorEstimate> estimates;
+      std::string                          decision;
+    };
+    std::vector<Rung>                  rungs;
+    std::map<std::string, std::vector<double>> history;
+    std::unique_ptr<CaseParameters>    chosen_parameters;
+    LinearStaticModel<dim>             chosen;
+    bool                               met = false, finite_strain = false;
+    std::string                        geometric_reason;
+    if (root)
+      std::cout << "Model ladder: target " << percent(target.relative_error) << " on";
+    for (const auto &n : names)
+      if (root)
+        std::cout << ' ' << n;
+    if (root)
+      std::cout << "\n  (a) closed forms in Comparison carry validity warnings but no error bound: "
+                   "they do not end the climb\n  (b) dimension as set by Model = "
+                << p.model << "\n";
+
+    for (unsigned int k = 0; k <= target.max_refinements && !met; ++k)
+      {
+        auto rung_parameters = std::make_unique<CaseParameters>(p);
+        rung_parameters->global_refinements = p.global_refinements + k;
+        auto model = solve_linear_static_model<dim>(context, *rung_parameters);
+        if (model.stopped_for_check)
+          return 0;
+        Rung rung;
+        rung.refinements = rung_parameters->global_refinements;
+        rung.dofs        = model.quantities.at("n_dofs");
+        rung.seconds     = model.seconds;
+        met              = true;
+        for (const auto &n : names)
+          {
+            const auto found = model.quantities.find(n);
+            if (found == model.quantities.end())
+              throw InputError("case file '" + p.case_file + "', Target/Quantities: '" + n +
+                               "' is not a reported quantity");
+            rung.values[n] = found->second;
+            history[n].push_back(found->second);
+            const auto e     = estimate_discretization_error(history[n], p.element_degree + 1.0);
+            rung.estimates[n] = e;
+            // Only an observed order ends the climb: an assumed one is optimistic at singularities.
+            met = met && e.available && e.order_observed && e.relative <= target.relative_error;
+          }
+        if (k == 0)
+          {
+            // (c) the geometric error of the linear answer, of order theta^2.
+            const double theta = largest_rotation(*model.problem);
+            const double geometric = theta * theta;
+            std::ostringstream why;
+            why << "largest rotation " << std::setprecision(3) << theta * 180 / M_PI << " deg: geometric error ~theta^2 = "
+                << percent(geometric) << (geometric > target.relative_error ? " > " : " <= ") << "target";
+            geometric_reason = why.str();
+            finite_strain    = geometric > target.relative_error;
+            if (finite_strain && !target.allow_finite_strain)
+              geometric_reason += ": finite strain would be needed, but Target/Allow finite strain = false keeps it linear";
+            else
+              geometric_reason += finite_strain ? ": finite strain needed (discretization still chosen on linear rungs)" :
+                                                  ": linear is enough";
+            finite_strain = finite_strain && target.allow_finite_strain;
+            if (root)
+              std::cout << "  (c) " << geometric_reason << "\n";
+          }
+        if (met)
+          rung.decision = "estimate meets the target: stop";
+        else if (k == target.max_refinements)
+          rung.decision = "target NOT met within Target/Maximum refinements";
+        else
+          {
+            rung.decision = "refine:";
+            for (const auto &[n, e] : rung.estimates)
+              if (!e.available)
+                rung.decision += " " + n + " " + e.note + ";";
+              else if (e.relative > target.relative_error)
+                rung.decision += " " + n + " estimate " + percent(e.relative) + " > target;";
+              else if (!e.order_observed)
+                rung.decision += " " + n + " " + e.note + ", one more rung to observe it;";
+          }
+        if (root)
+          {
+            std::cout << "  (d) rung " << k + 1 << ": linear, degree " << p.element_degree << ", refinements "
+                      << rung.refinements << ", " << static_cast<long>(rung.dofs) << " DoFs, "
+                      << std::setprecision(3) << rung.seconds << " s;";
+            for (const auto &[n, v] : rung.values)
+              {
+                const auto &e = rung.estimates[n];
+                std::cout << ' ' << n << " = " << std::setprecision(8) << v << " (estimate "
+                          << (e.available ? percent(e.relative) : std::string("-")) << ")";
+              }
+            std::cout << "; " << rung.decision << std::endl;
+          }
+        rungs.push_back(rung);
+        chosen_parameters = std::move(rung_parameters);
+        chosen            = std::move(model);
+      }
+
+    // The chosen model's run: linear output as usual, or the finite-strain analysis on its mesh.
+    RunContext chosen_context{*chosen_parameters, context.prm, context.geometry, context.check_only,
+                              context.communicator};
+    auto write_ladder = [&](const std::string &directory) {
+      if (!root)
+        return;
+      std::filesystem::create_directories(directory);
+      std::ofstream out(directory + "/ladder.csv.tmp");
+      out << "rung,model,degree,refinements,dofs,seconds,cumulative_seconds";
+      for (const auto &n : names)
+        out << ',' << n << ",estimate_" << n;
+      out << "\n" << std::setprecision(10);
+      double cumulative = 0;
+      for (std::size_t k = 0; k < rungs.size(); ++k)
+        {
+          cumulative += rungs[k].seconds;
+          out << k + 1 << ",linear," << p.element_degree << ',' << rungs[k].refinements << ','
+              << rungs[k].dofs << ',' << rungs[k].seconds << ',' << cumulative;
+          for (const auto &n : names)
+            {
+              const auto &e = rungs[k].estimates.at(n);
+              out << ',' << rungs[k].values.at(n) << ',';
+              if (e.available)
+                out << e.relative;
+            }
+          out << "\n";
+        }
+      out.close();
+      std::filesystem::rename(directory + "/ladder.csv.tmp", directory + "/ladder.csv");
+    };
+    if (finite_strain)
+      {
+        if (root)
+          std::cout << "  (c) finite strain on the chosen mesh (" << chosen_parameters->global_refinements
+                    << " refinements)" << std::endl;
+        chosen.problem.reset();
+        CaseParameters nonlinear = *chosen_parameters;
+        nonlinear.analysis       = "nonlinear static";
+        RunContext nonlinear_context{nonlinear, context.prm, context.geometry, context.check_only,
+                                     context.communicator};
+        const int rc = find_analysis("nonlinear static").run(nonlinear_context);
+        write_ladder(nonlinear.output_directory);
+        return rc;
+      }
+
+    const auto &problem = *chosen.problem;
+    RunSummary  summary =
+      start_summary(chosen_context, problem.triangulation.all_reference_cells_are_hyper_cube());
+    summary.settings.insert({"solver", problem.solver_method});
+    summary.settings.insert({"ladder", met ? "target met" : "target not met"});
+    summary.settings.insert({"ladder_geometric_check", geometric_reason});
+    summary.quantities = chosen.quantities;
+    summary.quantities["ladder_rungs"]         = rungs.size();
+    summary.quantities["ladder_total_seconds"] = total.wall_time();
+    summary.quantities["target_relative_error"] = target.relative_error;
+    for (const auto &[n, e] : rungs.back().estimates)
+      if (e.available)
+        {
+          summary.quantities[n + "_error_estimate"] = e.relative;
+          summary.quantities[n + "_observed_order"] = e.observed_order;
+        }
+      else
+        summary.settings.insert({n + "_error_estimate", e.note});
+    finish_run(chosen_context, summary, problem.expression_variables(), [&](const std::string &directory) {
+      write_fields(problem, directory);
+    });
+    write_ladder(chosen_parameters->output_directory);
+    return met ? 0 : 4;
+  }
+
+  template int run_model_ladder<2>(const RunContext &, const TargetSettings &);
+  template int run_model_ladder<3>(const RunContext &, const TargetSettings &);
+} // namespace compliant

@@ -1,0 +1,33 @@
+// The model ladder (Target/Relative error > 0): a linear static case climbs from the cheapest model
+// until the estimated error of its quantities meets the target. Rungs: (a) a closed form named in
+// Comparison is reported with its validity warnings but gives no error bound, so it never ends the
+// climb; (b) 2D before 3D is the user's choice of Model (the ladder does not change the dimension);
+// (c) linear before finite strain: after the first linear rung the largest material rotation theta
+// decides, the geometric error of a linear model being of order theta^2; (d) uniform refinement at
+// the case's degree until the Richardson estimate (observed order) meets the target. Each rung is
+// printed (model, DoFs, time, values, estimates, why it went on) and written to ladder.csv.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include "analyses/analysis.h"
+
+#include <string>
+#include <vector>
+
+namespace compliant
+{
+  struct TargetSettings
+  {
+    double                   relative_error = 0; // fraction (the case gives percent)
+    std::vector<std::string> quantities;
+    unsigned int             max_refinements = 4;
+    bool                     allow_finite_strain = true;
+  };
+
+  void           declare_target_settings(dealii::ParameterHandler &prm);
+  TargetSettings read_target_settings(dealii::ParameterHandler &prm);
+
+  template <int dim>
+  int run_model_ladder(const RunContext &context, const TargetSettings &target);
+} // namespace compliant
