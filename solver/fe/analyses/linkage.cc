@@ -2,8 +2,8 @@
 
 #include <deal.II/base/timer.h>
 
-#include "analyses/extra_constraints.h"
-#include "analyses/global_constraints.h"
+#include "constraints/extra_constraints.h"
+#include "constraints/global_constraints.h"
 #include "elasticity/linear_elastic_problem.h"
 #include "output/field_output.h"
 #include "quantities/quantities.h"

@@ -2,8 +2,8 @@
 
 #include <deal.II/base/timer.h>
 
-#include "analyses/extra_constraints.h"
-#include "analyses/global_constraints.h"
+#include "constraints/extra_constraints.h"
+#include "constraints/global_constraints.h"
 #include "analyses/modal_eigensolver.h"
 #include "analyses/modal_fields.h"
 #include "analyses/modal_mass_matrix.h"

@@ -1,8 +1,8 @@
-#include "analyses/extra_constraints.h"
+#include "constraints/extra_constraints.h"
 
-#include "analyses/edge_supports.h"
-#include "analyses/mirror_ties.h"
-#include "analyses/pin_joints.h"
+#include "constraints/edge_supports.h"
+#include "constraints/mirror_ties.h"
+#include "constraints/pin_joints.h"
 #include "input/spec_list.h"
 
 namespace compliant

@@ -1,4 +1,4 @@
-#include "analyses/boundary_dof_points.h"
+#include "constraints/boundary_dof_points.h"
 
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>

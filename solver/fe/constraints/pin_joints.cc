@@ -1,6 +1,6 @@
-#include "analyses/pin_joints.h"
+#include "constraints/pin_joints.h"
 
-#include "analyses/boundary_dof_points.h"
+#include "constraints/boundary_dof_points.h"
 #include "input/spec_list.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-#include "analyses/mirror_ties.h"
+#include "constraints/mirror_ties.h"
 
-#include "analyses/boundary_dof_points.h"
+#include "constraints/boundary_dof_points.h"
 #include "input/expression.h"
 #include "input/spec_list.h"
 

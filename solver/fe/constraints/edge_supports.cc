@@ -1,6 +1,6 @@
-#include "analyses/edge_supports.h"
+#include "constraints/edge_supports.h"
 
-#include "analyses/boundary_dof_points.h"
+#include "constraints/boundary_dof_points.h"
 #include "input/spec_list.h"
 
 namespace compliant
