@@ -69,7 +69,9 @@ def parse_values(text):
         start, stop, count = text.split(":")
         start, stop, count = float(start), float(stop), int(count)
         return [start + (stop - start) * i / (count - 1) for i in range(count)] if count > 1 else [start]
-    return [float(v) if _is_number(v) else v for v in text.split(",")]
+    # Integers stay integers: integer entries (Element degree, Global refinements) refuse "1.0".
+    return [(int(v) if v.strip().lstrip("-").isdigit() else float(v)) if _is_number(v) else v
+            for v in text.split(",")]
 
 
 def _is_number(v):
@@ -90,6 +92,12 @@ def main():
     ap.add_argument("--out", default=None, help="output folder (default results/study_<case>)")
     ap.add_argument("--plot", action="append", default=[],
                     help="x:y chart from the table columns (reference curves are added when y has comparisons)")
+    ap.add_argument("--accuracy", action="append", default=[],
+                    help="QOI[=REFERENCE][:FAMILY]: error of QOI against wall time (time_total), log-log, one "
+                         "line per value of the varied FAMILY column (e.g. 'Element degree'); the reference "
+                         "is the given value, else the closed form of QOI's comparison, else the study's "
+                         "most expensive run (then the error is an estimate and the chart says so)")
+    ap.add_argument("--target", type=float, default=None, help="percent, drawn on --accuracy charts")
     args = ap.parse_args()
 
     names, lists = [], []
@@ -128,6 +136,52 @@ def main():
     for spec in args.plot:
         from chart import plot_study  # local module, imported only when a chart is asked for
         print("chart:", plot_study(table, spec, out))
+    for spec in args.accuracy:
+        print("chart:", accuracy_chart(rows, spec, args.target, out))
+
+
+def accuracy_chart(rows, spec, target, out):
+    """Relative error of a quantity against wall time for every run of a study."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    family = None
+    if ":" in spec:
+        spec, family = spec.split(":", 1)
+    qoi, reference, label = spec, None, "given reference"
+    if "=" in spec:
+        qoi, value = spec.split("=", 1)
+        reference = float(value)
+    if reference is None:
+        refs = [r[k] for r in rows for k in r if k.startswith("ref:%s~" % qoi)]
+        if refs:
+            reference, label = float(refs[0]), "closed form"
+    if reference is None:
+        finest = max(rows, key=lambda r: float(r.get("time_total", 0)))
+        reference, label = float(finest[qoi]), "most expensive run (estimate)"
+    groups = {}
+    for r in rows:
+        if qoi not in r or "time_total" not in r:
+            continue
+        key = r.get(family.split("/")[-1], "") if family else ""
+        err = abs(float(r[qoi]) - reference) / abs(reference)
+        groups.setdefault(key, []).append((float(r.get("n_dofs", 0)), float(r["time_total"]), err))
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for key, pts in sorted(groups.items()):
+        pts = sorted(p for p in pts if p[2] > 0)  # joined in order of DoFs, as the mesh is refined
+        if pts:
+            ax.loglog([p[1] for p in pts], [100 * p[2] for p in pts], "o-",
+                      label=("%s = %s" % (family.split("/")[-1], key)) if family else qoi)
+    if target:
+        ax.axhline(target, color="r", lw=1, label="target %.2g %%" % target)
+    ax.set_xlabel("wall time of the run (time_total, s)")
+    ax.set_ylabel("relative error of %s (%%), against the %s" % (qoi, label))
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out, "accuracy_%s.png" % qoi)
+    fig.savefig(path, dpi=110)
+    return path
 
 
 if __name__ == "__main__":
