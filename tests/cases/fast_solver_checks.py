@@ -14,6 +14,7 @@ refinement. Iteration counts and agreement, not times: machine independent.
    assembled matrix takes 38 at n = 8).
 3. 'auto' chooses matrix-free on hexahedra at degree 2, and on a tetrahedral mesh says why not
    and uses an assembled-matrix method; an explicit matrix-free request there falls back with a note.
+4. 'auto' redoes a failed iterative solve with MUMPS and says so; an explicit request fails clearly.
 """
 import os
 import sys
@@ -87,6 +88,22 @@ check(asked["settings"]["solver"] == "cg-amg" and "quadrilateral/hexahedral" in 
       "matrix-free asked on tetrahedra: %s (%s)" % (asked["settings"]["solver"], note))
 tip = [s["quantities"]["displacement_tip_z"] for s in (auto_tet, asked)]
 check(abs(tip[0] - tip[1]) < 1e-8 * abs(tip[0]), "same tetrahedral answer either way: %s" % tip)
+
+# 4. 'auto' falls back to MUMPS when the iterative solve fails (here forced by a 2-iteration cap), says so,
+#    and gives MUMPS's answer; an explicit 'matrix-free' request fails instead, with a clear message.
+capped = beam_sets + ["Geometry/Parameters/ny=2", "Geometry/Parameters/nz=2", "Linear solver/Maximum iterations=2"]
+fallback = run_case(beam, capped)
+note = fallback["settings"].get("solver_note", "")
+exact = run_case(beam, capped + ["Linear solver/Method=direct"])["quantities"]["displacement_tip_z"]
+check(fallback["settings"]["solver"] == "direct" and "did not converge" in note and
+      abs(fallback["quantities"]["displacement_tip_z"] - exact) < 1e-10 * abs(exact),
+      "auto falls back to MUMPS: %s (%s)" % (fallback["settings"]["solver"], note))
+try:
+    run_case(beam, capped + ["Linear solver/Method=matrix-free"])
+    check(False, "explicit matrix-free with 2 iterations should fail")
+except RuntimeError as e:
+    check("did not converge" in str(e) and "Method = direct" in str(e),
+          "explicit matrix-free that cannot converge fails with advice: %s" % str(e).splitlines()[-1][:160])
 
 print("FAIL" if failures else "PASS")
 sys.exit(1 if failures else 0)
