@@ -1,0 +1,87 @@
+#!/usr/bin/python3
+"""CalculiX (Debian's calculix-ccx) on the benchmark boxes, C3D20R (20-node serendipity hexahedra,
+reduced integration), E = 1000, nu = 0.3, its default SPOOLES solver with 2 threads:
+  cantilever N: 10 x 1 x 1, 10N x N x N cells, body load (0, 0, -1) through GRAV with density 1,
+                clamped at x = 0; QoI the tip deflection at (10, 0, 0);
+  leaf M:       40 x 10 x 1, 5M x 10M x M cells, clamped at x = 0, x = 40 turned rigidly by 1 degree
+                about the x axis (exact rotation per node); QoI the strain energy (*EL PRINT ELSE).
+Writes the deck into WORK, runs ccx, prints one JSON line. Run: calculix_box.py PROBLEM N WORK"""
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import time
+
+problem, n, work = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+if problem == "cantilever":
+    (nx, ny, nz), lo, hi = (10 * n, n, n), (0.0, -0.5, -0.5), (10.0, 0.5, 0.5)
+elif problem == "leaf":
+    (nx, ny, nz), lo, hi = (5 * n, 10 * n, n), (0.0, -5.0, -0.5), (40.0, 5.0, 0.5)
+else:
+    sys.exit("unknown problem '%s' (cantilever | leaf)" % problem)
+os.makedirs(work, exist_ok=True)
+
+
+def node_id(i, j, k):  # on the (2nx+1) x (2ny+1) x (2nz+1) grid of corner and mid-side points
+    return 1 + i + (2 * nx + 1) * (j + (2 * ny + 1) * k)
+
+
+def coordinates(i, j, k):
+    return tuple(lo[d] + (hi[d] - lo[d]) * c / (2 * m) for d, (c, m) in enumerate(((i, nx), (j, ny), (k, nz))))
+
+
+# Local corner/mid-side offsets in CalculiX's C3D20 order (corners 1-8, then edges 9-20).
+order = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2),
+         (1, 0, 0), (2, 1, 0), (1, 2, 0), (0, 1, 0), (1, 0, 2), (2, 1, 2), (1, 2, 2), (0, 1, 2),
+         (0, 0, 1), (2, 0, 1), (2, 2, 1), (0, 2, 1)]
+elements, used = [], {}
+for c in range(nz):
+    for b in range(ny):
+        for a in range(nx):
+            ids = []
+            for di, dj, dk in order:
+                ijk = (2 * a + di, 2 * b + dj, 2 * c + dk)
+                used[node_id(*ijk)] = ijk
+                ids.append(node_id(*ijk))
+            elements.append(ids)
+lines = ["*NODE"] + ["%d, %.12g, %.12g, %.12g" % ((nid,) + coordinates(*ijk)) for nid, ijk in sorted(used.items())]
+lines.append("*ELEMENT, TYPE=C3D20R, ELSET=EALL")
+for e, ids in enumerate(elements):
+    lines.append("%d, %s," % (e + 1, ", ".join(map(str, ids[:15]))))
+    lines.append(", ".join(map(str, ids[15:])))
+fixed = sorted(nid for nid, ijk in used.items() if ijk[0] == 0)
+lines += ["*NSET, NSET=FIX"] + ["%d," % f for f in fixed]
+lines += ["*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.3", "*DENSITY", "1.",
+          "*SOLID SECTION, ELSET=EALL, MATERIAL=M", "*STEP", "*STATIC", "*BOUNDARY", "FIX, 1, 3"]
+if problem == "cantilever":
+    tip = node_id(2 * nx, ny, nz)
+    lines += ["*DLOAD", "EALL, GRAV, 1., 0., 0., -1.", "*NSET, NSET=TIP", "%d," % tip, "*NODE PRINT, NSET=TIP", "U"]
+else:
+    theta = math.radians(1.0)
+    for nid, ijk in sorted(used.items()):
+        if ijk[0] == 2 * nx:
+            _, y, z = coordinates(*ijk)
+            lines += ["%d, 1, 1, 0." % nid,
+                      "%d, 2, 2, %.15g" % (nid, y * (math.cos(theta) - 1) - z * math.sin(theta)),
+                      "%d, 3, 3, %.15g" % (nid, y * math.sin(theta) + z * (math.cos(theta) - 1))]
+    lines += ["*EL PRINT, ELSET=EALL, TOTALS=ONLY", "ELSE"]
+lines.append("*END STEP")
+with open(os.path.join(work, "job.inp"), "w") as f:
+    f.write("\n".join(lines) + "\n")
+
+env = dict(os.environ, OMP_NUM_THREADS="2", CCX_NPROC_EQUATION_SOLVER="2")
+start = time.perf_counter()
+proc = subprocess.run(["/usr/bin/time", "-f", "MAXRSS %M", "ccx", "-i", "job"], cwd=work,
+                      capture_output=True, text=True, env=env)
+wall = time.perf_counter() - start
+if proc.returncode != 0:
+    sys.exit("ccx failed: " + proc.stdout[-500:] + proc.stderr[-500:])
+dat = open(os.path.join(work, "job.dat")).read()
+if problem == "cantilever":
+    qoi = float(re.findall(r"^\s*%d\s+(\S+)\s+(\S+)\s+(\S+)" % tip, dat, re.M)[-1][2])
+else:
+    qoi = float(re.findall(r"total internal energy[^\n]*\n\s*\n?\s*(\S+)", dat)[-1])
+memory = float(re.findall(r"MAXRSS (\d+)", proc.stderr)[-1]) / 1024.0
+print(json.dumps({"dofs": 3 * len(used), "qoi": qoi, "wall_s": wall, "memory_mb": memory, "iterations": 1}))
