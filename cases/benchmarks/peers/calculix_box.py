@@ -64,8 +64,8 @@ else:
         if ijk[0] == 2 * nx:
             _, y, z = coordinates(*ijk)
             lines += ["%d, 1, 1, 0." % nid,
-                      "%d, 2, 2, %.15g" % (nid, y * (math.cos(theta) - 1) - z * math.sin(theta)),
-                      "%d, 3, 3, %.15g" % (nid, y * math.sin(theta) + z * (math.cos(theta) - 1))]
+                      "%d, 2, 2, %.10g" % (nid, y * (math.cos(theta) - 1) - z * math.sin(theta)),  # ccx reads 20 characters
+                      "%d, 3, 3, %.10g" % (nid, y * math.sin(theta) + z * (math.cos(theta) - 1))]
     lines += ["*EL PRINT, ELSET=EALL, TOTALS=ONLY", "ELSE"]
 lines.append("*END STEP")
 with open(os.path.join(work, "job.inp"), "w") as f:
