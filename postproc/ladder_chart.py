@@ -19,7 +19,7 @@ parser.add_argument("--reference", action="append", default=[], help="quantity=v
 parser.add_argument("--out", default=None)
 args = parser.parse_args()
 rows = list(csv.DictReader(open(args.ladder_csv)))
-names = [k for k in rows[0] if k not in ("rung", "model", "degree", "refinements", "dofs", "seconds",
+names = [k for k in rows[0] if k not in ("rung", "model", "degree", "refinements", "adaptive_cycles", "dofs", "seconds",
                                           "cumulative_seconds") and not k.startswith("estimate_")]
 references = dict((kv.split("=")[0], float(kv.split("=")[1])) for kv in args.reference)
 fig, ax = plt.subplots(figsize=(7, 5))

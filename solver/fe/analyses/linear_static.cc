@@ -27,6 +27,8 @@ namespace compliant
       summary.settings.insert({"solver_requested", p.solver_method});
       if (!problem.solver_note.empty())
         summary.settings.insert({"solver_note", problem.solver_note});
+      if (!problem.statistics.multigrid_note.empty())
+        summary.settings.insert({"multigrid", problem.statistics.multigrid_note});
       summary.quantities = model.quantities;
       finish_run(context, summary, problem.expression_variables(),
                  [&](const std::string &directory) { write_fields(problem, directory); });

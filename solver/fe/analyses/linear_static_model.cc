@@ -49,7 +49,7 @@ namespace compliant
                       << " coarse CG iterations; DoFs per degree:";
             for (const auto n : problem.statistics.level_dofs)
               std::cout << ' ' << n;
-            std::cout << ')';
+            std::cout << "; " << problem.statistics.multigrid_note << ')';
           }
         std::cout << std::endl;
       }

@@ -24,6 +24,7 @@
 
 #include <deal.II/lac/solver_control.h>
 
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
@@ -123,7 +124,8 @@ namespace compliant
       throw std::invalid_argument("Model = " + parameters.model + " needs a " +
                                   std::to_string(dim) + "D mesh, but '" + parameters.mesh_file +
                                   "' is " + std::to_string(geometry.dimension) + "D");
-    create_triangulation(triangulation, geometry, parameters.global_refinements);
+    create_triangulation(triangulation, geometry, parameters.global_refinements,
+                         parameters.adaptive_refinements);
 
     const unsigned int degree = parameters.element_degree;
     if (triangulation.all_reference_cells_are_hyper_cube())
@@ -443,6 +445,14 @@ namespace compliant
     statistics.preconditioner_setup_seconds = solver.statistics().setup_seconds;
     statistics.level_dofs.assign(solver.statistics().level_dofs.begin(),
                                  solver.statistics().level_dofs.end());
+    {
+      const auto       &s = solver.statistics();
+      std::ostringstream note;
+      note << "largest cell aspect ratio " << std::setprecision(3) << s.largest_aspect_ratio
+           << ": Chebyshev degree " << s.smoothing_degree << " over range " << s.smoothing_range
+           << ", degree-1 level by " << (s.coarse_direct ? "MUMPS" : "GAMG");
+      statistics.multigrid_note = note.str();
+    }
     try
       {
         statistics.iterations = solver.solve(system_rhs, constraints, x);

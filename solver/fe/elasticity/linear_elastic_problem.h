@@ -29,6 +29,7 @@ namespace compliant
     double                    preconditioner_setup_seconds = 0;
     unsigned int              coarse_iterations = 0; // inner CG on degree 1, summed
     std::vector<std::size_t>  level_dofs;
+    std::string               multigrid_note; // smoother and coarse solve, and why
   };
 
   template <int dim>

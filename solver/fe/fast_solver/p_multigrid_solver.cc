@@ -16,7 +16,11 @@
 #include <deal.II/multigrid/mg_transfer_global_coarsening.h>
 #include <deal.II/multigrid/multigrid.h>
 
-#include "fast_solver/amg_coarse_solver.h"
+#include <algorithm>
+#include <cmath>
+
+#include "fast_solver/coarse_level_solver.h"
+#include "mesh/cell_aspect_ratio.h"
 #include "linear_algebra/rigid_body_modes.h"
 
 namespace compliant::fast_solver
@@ -40,7 +44,7 @@ namespace compliant::fast_solver
     MGLevelObject<MGTwoLevelTransfer<dim, VectorType>> two_level_transfers;
     std::unique_ptr<TransferType>                  transfer;
     PETScWrappers::MPI::SparseMatrix               coarse_matrix;
-    std::unique_ptr<AmgCoarseSolver>               coarse_solver;
+    std::unique_ptr<CoarseLevelSolver>               coarse_solver;
     MGSmootherPrecondition<Operator, SmootherType, VectorType> smoother;
   };
 
@@ -91,23 +95,34 @@ namespace compliant::fast_solver
         L.operators[level]->initialize_dof_vector(vector);
       });
 
+    stats.largest_aspect_ratio = largest_cell_aspect_ratio(fine_dofs.get_triangulation(), communicator);
+    const double a             = stats.largest_aspect_ratio;
+    stats.smoothing_range      = settings.smoothing_range > 0 ? settings.smoothing_range :
+                                                                std::clamp(3 * a * a, 20.0, 400.0);
+    stats.smoothing_degree     = settings.smoothing_degree > 0 ?
+                                   settings.smoothing_degree :
+                                   std::clamp<unsigned int>(std::lround(std::sqrt(stats.smoothing_range)) - 1, 4, 16);
+    stats.coarse_direct        = settings.coarse == PMultigridSettings::Coarse::direct ||
+                          (settings.coarse == PMultigridSettings::Coarse::automatic && a > 3 &&
+                           L.dofs[0]->n_dofs() <= settings.direct_coarse_limit);
+
     MGLevelObject<typename Levels::SmootherType::AdditionalData> smoother_data(0, top);
     for (unsigned int level = 0; level <= top; ++level)
       {
         auto &data          = smoother_data[level];
         data.preconditioner = std::make_shared<DiagonalMatrix<typename Levels::VectorType>>();
         L.operators[level]->compute_inverse_diagonal(data.preconditioner->get_vector());
-        data.degree              = settings.smoothing_degree;
-        data.smoothing_range     = settings.smoothing_range;
+        data.degree              = stats.smoothing_degree;
+        data.smoothing_range     = stats.smoothing_range;
         data.eig_cg_n_iterations = 15;
         data.constraints.copy_from(L.constraints[level]);
       }
     L.smoother.initialize(L.operators, smoother_data);
 
     L.operators[0]->compute_matrix(L.coarse_matrix, communicator);
-    L.coarse_solver = std::make_unique<AmgCoarseSolver>(
+    L.coarse_solver = std::make_unique<CoarseLevelSolver>(
       L.coarse_matrix, rigid_body_modes(mapping, *L.dofs[0], communicator), dim,
-      settings.coarse_tolerance, settings.petsc_options);
+      stats.coarse_direct, settings.coarse_tolerance, settings.petsc_options);
     stats.setup_seconds = timer.wall_time();
   }
 
@@ -152,7 +167,7 @@ namespace compliant::fast_solver
                                                                                  *L.transfer);
     SolverControl        control(settings.max_iterations,
                           settings.relative_tolerance * rhs.l2_norm(), false, false);
-    if (settings.coarse_tolerance > 0)
+    if (settings.coarse_tolerance > 0 && !stats.coarse_direct)
       SolverFlexibleCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);
     else
       SolverCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);

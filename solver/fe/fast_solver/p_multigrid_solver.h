@@ -1,7 +1,16 @@
 // The fast linear solver for elasticity on quadrilaterals/hexahedra: conjugate gradients on the
 // matrix-free operator, preconditioned by a p-multigrid V-cycle (degree p, p-1, ..., 1 on the same
-// mesh, Chebyshev smoothing on the diagonal) whose degree-1 level is solved by one AMG V-cycle
-// (PETSc GAMG with block size and rigid-body modes). Only the degree-1 matrix is ever stored.
+// mesh, Chebyshev smoothing on the diagonal) whose degree-1 level is solved by AMG (PETSc GAMG with
+// block size and rigid-body modes) or, for thin parts, by MUMPS. Only the degree-1 matrix is
+// ever stored.
+//
+// Long cells (a thin leaf meshed 8 : 1 : 1) leave error modes along the long direction that the
+// diagonal sees as nearly converged: the smoother then damps a wider eigenvalue range with a
+// higher polynomial, both from the largest cell aspect ratio a (range 3 a^2, degree ~ sqrt of
+// range, 4 to 16), and the degree-1 level, where GAMG needs tens of iterations on such meshes, is
+// factored by MUMPS while it is small. Measured on cases/benchmarks/leaf_torsion.prm (90k DoFs,
+// a = 8): fixed degree 4 / range 20 with GAMG took 91 iterations and 6.8 s, the sized smoother
+// with MUMPS 30 iterations and 2.7 s.
 #pragma once
 
 #include <deal.II/dofs/dof_handler.h>
@@ -24,10 +33,15 @@ namespace compliant::fast_solver
     unsigned int max_iterations     = 500;
     // Measured on the 140k-DoF Q2 cantilever (cases/benchmarks): degree 4 with an inner coarse
     // tolerance of 0.03 gave 11 outer iterations, the least time; one V-cycle alone gave 34.
-    unsigned int smoothing_degree   = 4;  // Chebyshev polynomial degree per smoothing step
-    double       smoothing_range    = 20; // eigenvalue range Chebyshev damps
-    // Degree-1 level: 0 = one AMG V-cycle; > 0 = CG + AMG to this residual reduction, and the
-    // outer CG becomes flexible (the preconditioner then varies from one application to the next).
+    // 0 (default): chosen from the cells' aspect ratio, degree 4 and range 20 for cubes.
+    unsigned int smoothing_degree   = 0;  // Chebyshev polynomial degree per smoothing step
+    double       smoothing_range    = 0;  // eigenvalue range Chebyshev damps
+    // Degree-1 level: automatic = MUMPS for long cells (aspect ratio > 3) while the degree-1
+    // system has at most direct_coarse_limit DoFs, else AMG.
+    enum class Coarse { automatic, amg, direct } coarse = Coarse::automatic;
+    double       direct_coarse_limit = 250000;
+    // AMG: 0 = one V-cycle; > 0 = CG + AMG to this residual reduction, and the outer CG becomes
+    // flexible (the preconditioner then varies from one application to the next).
     double       coarse_tolerance   = 0.03;
     std::string  petsc_options;           // passed to the coarse GAMG
   };
@@ -37,6 +51,10 @@ namespace compliant::fast_solver
     unsigned int                         iterations    = 0;
     unsigned int                         coarse_iterations = 0; // inner CG, summed
     double                               setup_seconds = 0;
+    double                               largest_aspect_ratio = 1;
+    unsigned int                         smoothing_degree = 0;
+    double                               smoothing_range  = 0;
+    bool                                 coarse_direct    = false;
     std::vector<dealii::types::global_dof_index> level_dofs; // coarse to fine
   };
 

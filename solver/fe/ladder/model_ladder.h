@@ -3,8 +3,9 @@
 // Comparison is reported with its validity warnings but gives no error bound, so it never ends the
 // climb; (b) 2D before 3D is the user's choice of Model (the ladder does not change the dimension);
 // (c) linear before finite strain: after the first linear rung the largest material rotation theta
-// decides, the geometric error of a linear model being of order theta^2; (d) uniform refinement at
-// the case's degree until the Richardson estimate (observed order) meets the target. Each rung is
+// decides, the geometric error of a linear model being of order theta^2; (d) refinement at the
+// case's degree, uniform or adaptive (Kelly indicator, hanging nodes), until the Richardson
+// estimate (observed order, mesh size h = N^(-1/dim) from the DoF count N) meets the target. Each rung is
 // printed (model, DoFs, time, values, estimates, why it went on) and written to ladder.csv.
 #pragma once
 
@@ -23,6 +24,8 @@ namespace compliant
     std::vector<std::string> quantities;
     unsigned int             max_refinements = 4;
     bool                     allow_finite_strain = true;
+    bool                     adaptive = false;       // Refinement = adaptive
+    double                   refined_fraction = 0.3; // of the cells, per adaptive rung
   };
 
   void           declare_target_settings(dealii::ParameterHandler &prm);

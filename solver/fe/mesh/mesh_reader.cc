@@ -3,20 +3,38 @@
 #include <deal.II/grid/grid_in.h>
 
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace compliant
 {
   template <int dim>
   void create_triangulation(dealii::Triangulation<dim> &triangulation,
-                            const MeshedGeometry &geometry, const unsigned int global_refinements)
+                            const MeshedGeometry &geometry, const unsigned int global_refinements,
+                            const std::vector<std::vector<bool>> &adaptive_refinements)
   {
     dealii::GridIn<dim> grid_in;
     grid_in.attach_triangulation(triangulation);
     std::istringstream in(geometry.msh_text);
     grid_in.read_msh(in);
     triangulation.refine_global(global_refinements);
+    for (const auto &flags : adaptive_refinements)
+      {
+        if (!triangulation.all_reference_cells_are_hyper_cube())
+          throw std::invalid_argument("adaptive refinement needs quadrilaterals or hexahedra "
+                                      "(deal.II has no hanging nodes on triangles and tetrahedra)");
+        // save_refine_flags keeps dim bits per active cell (the refinement case).
+        if (flags.size() != dim * triangulation.n_active_cells())
+          throw std::logic_error("create_triangulation: " + std::to_string(flags.size()) +
+                                 " refine flags do not match a mesh of " +
+                                 std::to_string(triangulation.n_active_cells()) + " cells");
+        triangulation.load_refine_flags(flags);
+        triangulation.execute_coarsening_and_refinement();
+      }
   }
 
-  template void create_triangulation<2>(dealii::Triangulation<2> &, const MeshedGeometry &, unsigned int);
-  template void create_triangulation<3>(dealii::Triangulation<3> &, const MeshedGeometry &, unsigned int);
+  template void create_triangulation<2>(dealii::Triangulation<2> &, const MeshedGeometry &, unsigned int,
+                                       const std::vector<std::vector<bool>> &);
+  template void create_triangulation<3>(dealii::Triangulation<3> &, const MeshedGeometry &, unsigned int,
+                                       const std::vector<std::vector<bool>> &);
 } // namespace compliant

@@ -1,7 +1,8 @@
-#include "fast_solver/amg_coarse_solver.h"
+#include "fast_solver/coarse_level_solver.h"
 
 #include "linear_algebra/petsc_linear_solver.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace compliant::fast_solver
@@ -11,14 +12,14 @@ namespace compliant::fast_solver
     void check(const PetscErrorCode ierr, const char *what)
     {
       if (ierr != 0)
-        throw std::runtime_error(std::string("coarse AMG: PETSc error in ") + what);
+        throw std::runtime_error(std::string("coarse level solver: PETSc error in ") + what);
     }
   } // namespace
 
-  AmgCoarseSolver::AmgCoarseSolver(dealii::PETScWrappers::MPI::SparseMatrix         &matrix,
-                                   std::vector<dealii::PETScWrappers::MPI::Vector> rigid_body_modes,
-                                   const unsigned int block_size, const double relative_tolerance,
-                                   const std::string &petsc_options)
+  CoarseLevelSolver::CoarseLevelSolver(dealii::PETScWrappers::MPI::SparseMatrix         &matrix,
+                                       std::vector<dealii::PETScWrappers::MPI::Vector> rigid_body_modes,
+                                       const unsigned int block_size, const bool direct,
+                                       const double relative_tolerance, const std::string &petsc_options)
   {
     const auto owned = matrix.locally_owned_range_indices();
     rhs.reinit(owned, matrix.get_mpi_communicator());
@@ -27,6 +28,14 @@ namespace compliant::fast_solver
     check(KSPCreate(matrix.get_mpi_communicator(), &ksp), "KSPCreate");
     check(KSPSetOperators(ksp, matrix, matrix), "KSPSetOperators");
     check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    if (direct)
+      {
+        check(KSPSetType(ksp, KSPPREONLY), "KSPSetType(preonly)");
+        check(PCSetType(pc, PCLU), "PCSetType(lu)");
+        check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
+        check(KSPSetUp(ksp), "KSPSetUp (MUMPS factorization)");
+        return;
+      }
     configure_gamg(pc, matrix, std::move(rigid_body_modes), block_size, petsc_options);
     check(PCSetFromOptions(pc), "PCSetFromOptions");
     if (relative_tolerance > 0)
@@ -41,13 +50,13 @@ namespace compliant::fast_solver
     check(KSPSetUp(ksp), "KSPSetUp (GAMG set-up)");
   }
 
-  AmgCoarseSolver::~AmgCoarseSolver()
+  CoarseLevelSolver::~CoarseLevelSolver()
   {
     if (ksp)
       KSPDestroy(&ksp);
   }
 
-  void AmgCoarseSolver::operator()(const unsigned int, VectorType &dst, const VectorType &src) const
+  void CoarseLevelSolver::operator()(const unsigned int, VectorType &dst, const VectorType &src) const
   {
     // Both vectors number the same owned DoFs in the same order: copy the local parts.
     const unsigned int n = src.locally_owned_size();
@@ -61,7 +70,7 @@ namespace compliant::fast_solver
     check(KSPSolve(ksp, rhs, correction), "KSPSolve");
     PetscInt iterations = 0;
     KSPGetIterationNumber(ksp, &iterations);
-    total_iterations += iterations;
+    total_iterations += std::max<PetscInt>(iterations, 1);
     const PetscScalar *values;
     VecGetArrayRead(correction, &values);
     for (unsigned int i = 0; i < n; ++i)

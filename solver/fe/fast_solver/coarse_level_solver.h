@@ -1,0 +1,46 @@
+// The coarsest level of the p-multigrid, on the assembled degree-1 matrix: either PETSc's
+// smoothed-aggregation AMG (GAMG, given the block size and the rigid-body modes), as one V-cycle (a
+// fixed linear operator) or as CG preconditioned by it to a relative tolerance (then the outer
+// Krylov method must be flexible); or an exact MUMPS factorization, factored once, for thin parts
+// where GAMG needs tens of iterations per coarse solve and the degree-1 system is small.
+#pragma once
+
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+#include <deal.II/multigrid/mg_base.h>
+
+#include <petscksp.h>
+
+#include <string>
+#include <vector>
+
+namespace compliant::fast_solver
+{
+  class CoarseLevelSolver : public dealii::MGCoarseGridBase<dealii::LinearAlgebra::distributed::Vector<double>>
+  {
+  public:
+    using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
+
+    // The matrix must outlive this object. 'Linear solver/PETSc options' apply here too.
+    // direct: MUMPS. Otherwise relative_tolerance = 0: one GAMG V-cycle; > 0: CG + GAMG to that
+    // residual reduction.
+    CoarseLevelSolver(dealii::PETScWrappers::MPI::SparseMatrix         &matrix,
+                      std::vector<dealii::PETScWrappers::MPI::Vector> rigid_body_modes,
+                      unsigned int block_size, bool direct, double relative_tolerance,
+                      const std::string &petsc_options);
+    ~CoarseLevelSolver() override;
+    CoarseLevelSolver(const CoarseLevelSolver &)            = delete;
+    CoarseLevelSolver &operator=(const CoarseLevelSolver &) = delete;
+
+    void operator()(const unsigned int level, VectorType &dst, const VectorType &src) const override;
+
+    // Inner CG iterations over all coarse solves so far (direct: the number of solves).
+    unsigned int inner_iterations() const { return total_iterations; }
+
+  private:
+    KSP                                        ksp = nullptr;
+    mutable dealii::PETScWrappers::MPI::Vector rhs, correction;
+    mutable unsigned int                       total_iterations = 0;
+  };
+} // namespace compliant::fast_solver
