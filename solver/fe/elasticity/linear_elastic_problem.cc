@@ -159,6 +159,7 @@ namespace compliant
     constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     constraints.close();
+    hanging_node_constraints.copy_from(constraints);
     system_rhs.reinit(locally_owned_dofs, communicator);
     external_forces.reinit(locally_owned_dofs, communicator);
     solution.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
@@ -360,7 +361,8 @@ namespace compliant
                   }
               }
           cell->get_dof_indices(dofs);
-          external_forces.add(dofs, cell_rhs);
+          // C^T f: on adaptive meshes a hanging DoF's share belongs to its masters (reactions).
+          hanging_node_constraints.distribute_local_to_global(cell_rhs, dofs, external_forces);
           if (with_matrix)
             constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_matrix,
                                                    system_rhs);
@@ -515,7 +517,9 @@ namespace compliant
                   (sigma * fe_values[u].symmetric_gradient(i, q)) * fe_values.JxW(q) * thickness;
             }
           cell->get_dof_indices(dofs);
-          residual.add(dofs, cell_vector);
+          // Condensed like external_forces: a reaction on a boundary with hanging nodes is the
+          // sum over its masters (raw residuals at hanging DoFs are not forces on the support).
+          hanging_node_constraints.distribute_local_to_global(cell_vector, dofs, residual);
         }
     residual.compress(VectorOperation::add);
     residual -= external_forces;

@@ -85,6 +85,7 @@ namespace compliant
     dealii::DoFHandler<dim>                     dof_handler;
     dealii::IndexSet                            locally_owned_dofs, locally_relevant_dofs;
     dealii::AffineConstraints<double>           constraints;
+    dealii::AffineConstraints<double>           hanging_node_constraints; // adaptive meshes only
     std::map<int, Material>                     materials;
     BoundaryConditions<dim>                     boundary_conditions;
     double                                      thickness; // 1 in 3D
@@ -101,7 +102,7 @@ namespace compliant
     dealii::PETScWrappers::MPI::SparseMatrix system_matrix;
     dealii::PETScWrappers::MPI::Vector       system_rhs;
     // External forces without constraints applied: the reactions are f_int(u) - f_ext.
-    dealii::PETScWrappers::MPI::Vector       external_forces;
+    dealii::PETScWrappers::MPI::Vector       external_forces; // C^T f (hanging nodes condensed)
     dealii::PETScWrappers::MPI::Vector       solution; // ghosted (locally relevant)
     SolverStatistics                         statistics;
 

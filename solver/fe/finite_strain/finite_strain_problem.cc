@@ -161,6 +161,10 @@ namespace compliant
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
     solution.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_node_constraints);
+    hanging_node_constraints.close();
 
     const PETScWrappers::MPI::Vector zero(locally_owned_dofs, locally_relevant_dofs, communicator);
     const auto             constraints = make_constraints(0, true, zero);
@@ -178,6 +182,9 @@ namespace compliant
   {
     AffineConstraints<double> constraints;
     constraints.reinit(locally_relevant_dofs);
+    // Hanging nodes first (adaptive meshes from the model ladder): a hanging DoF on a supported
+    // boundary follows its masters, which carry the prescribed values.
+    constraints.merge(hanging_node_constraints);
     const ComponentMask displacement = fe->component_mask(FEValuesExtractors::Vector(0));
     std::vector<bool>   all(fe->n_components(), false);
     for (unsigned int d = 0; d < dim; ++d)
@@ -235,8 +242,10 @@ namespace compliant
                                                  constraints, displacement);
       }
     // Newton solves for the correction: the Dirichlet value minus the current displacement.
+    // (Hanging-node lines stay homogeneous: the displacement satisfies them at every step.)
     for (const auto &line : constraints.get_lines())
-      constraints.set_inhomogeneity(line.index, homogeneous ? 0. : line.inhomogeneity - u[line.index]);
+      if (line.entries.empty())
+        constraints.set_inhomogeneity(line.index, homogeneous ? 0. : line.inhomogeneity - u[line.index]);
     constraints.close();
     return constraints;
   }
@@ -467,7 +476,7 @@ namespace compliant
     // Force scale for the convergence test: internal forces including the reactions.
     auto force_norm = [&](const PETScWrappers::MPI::Vector &state) {
       PETScWrappers::MPI::Vector full(locally_owned_dofs, communicator);
-      assemble(state, target, nullptr, false, full);
+      assemble(state, target, &hanging_node_constraints, false, full);
       return full.l2_norm();
     };
 
@@ -636,7 +645,8 @@ namespace compliant
   PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::reaction_forces() const
   {
     PETScWrappers::MPI::Vector residual(locally_owned_dofs, communicator);
-    assemble(solution, load_factor, nullptr, false, residual);
+    // Condensed over hanging nodes (C^T r): reactions on adaptive meshes sum over the masters.
+    assemble(solution, load_factor, &hanging_node_constraints, false, residual);
     residual *= -1; // assemble gives f_ext - f_int
     return residual;
   }

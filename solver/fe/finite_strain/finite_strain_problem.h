@@ -127,6 +127,7 @@ namespace compliant
     StressResponse<dim> material_response(const HyperelasticLaw &law,
                                           const dealii::SymmetricTensor<2, dim> &E,
                                           double pressure) const;
+    dealii::AffineConstraints<double> hanging_node_constraints; // adaptive meshes only
     // Dirichlet values at load factor `lambda` minus the current displacement (first Newton
     // iteration), or homogeneous (later iterations).
     dealii::AffineConstraints<double> make_constraints(double lambda, bool homogeneous,

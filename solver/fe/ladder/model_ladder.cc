@@ -170,12 +170,23 @@ namespace compliant
         rung.refinements     = rung_parameters->global_refinements;
         rung.adaptive_cycles = rung_parameters->adaptive_refinements.size();
         rung.dofs            = model.quantities.at("n_dofs");
-        mesh_sizes.push_back(std::pow(rung.dofs, -1.0 / dim));
+        // Uniform rungs halve h exactly; adaptive ones measure it by the DoF count.
+        mesh_sizes.push_back(target.adaptive ? std::pow(rung.dofs, -1.0 / dim) : std::ldexp(1.0, -static_cast<int>(k)));
         met              = true;
+        // Targets may name derived quantities (Quantities/Derived) as well as computed ones.
+        auto rung_quantities = model.quantities;
+        try
+          {
+            add_derived_quantities(p.derived, rung_quantities, model.problem->expression_variables());
+          }
+        catch (const std::invalid_argument &e)
+          {
+            throw InputError("case file '" + p.case_file + "': " + e.what());
+          }
         for (const auto &n : names)
           {
-            const auto found = model.quantities.find(n);
-            if (found == model.quantities.end())
+            const auto found = rung_quantities.find(n);
+            if (found == rung_quantities.end())
               throw InputError("case file '" + p.case_file + "', Target/Quantities: '" + n +
                                "' is not a reported quantity");
             rung.values[n] = found->second;
@@ -298,7 +309,8 @@ namespace compliant
       {
         if (root)
           std::cout << "  (c) finite strain on the chosen mesh (" << chosen_parameters->global_refinements
-                    << " refinements)" << std::endl;
+                    << " refinements, " << chosen_parameters->adaptive_refinements.size()
+                    << " adaptive)" << std::endl;
         chosen.problem.reset();
         CaseParameters nonlinear = *chosen_parameters;
         nonlinear.analysis       = "nonlinear static";
