@@ -13,8 +13,9 @@ met against independent references, the linear/finite-strain decision, and singu
    and says why (the measured rotation squared exceeds the target).
 3. The peak von Mises stress of Cook's membrane sits at a re-entrant corner: no converged value, so
    the ladder reports irregular convergence and no estimate, and exits with code 4 (target not met).
-4. Adaptive refinement (Kelly, hanging nodes) on Cook's membrane meets a 0.05 % target on a steady
-   observed order, with a trustworthy estimate, on far fewer DoFs than uniform refinement.
+4. Adaptive refinement (Kelly, hanging nodes) on Cook's membrane meets a 0.01 % target on a steady
+   observed order, with a trustworthy estimate, on far fewer DoFs than uniform refinement, and a
+   0.05 % target through the safety factor on an unsteady order.
 """
 import csv
 import json
@@ -95,23 +96,30 @@ check(proc.returncode == 4 and "irregular convergence" in proc.stdout and "NOT m
 
 # Adaptive refinement (Kelly indicator, hanging nodes) on Cook's membrane: the reference is the
 # converged value 23.9677 (uniform Q2 to 132k DoFs, Richardson: 23.96668 + 0.00101; the
-# literature's 23.96 agrees to its 4 digits). The ladder may only stop on a steady observed order;
-# the estimate it stops on must be trustworthy (effectivity 0.5-3) and far cheaper than uniform
-# refinement, which needs 33k DoFs for an estimate under 0.05 %.
-proc, summary, rows = ladder(cook, ["Target/Relative error=0.05", "Target/Quantities=displacement_mid_y",
-                                    "Target/Allow finite strain=false", "Geometry/Parameters/n=4",
-                                    "Target/Refinement=adaptive", "Target/Maximum refinements=10"])
-check(proc.returncode == 0 and rows and int(rows[-1]["adaptive_cycles"]) == len(rows) - 1,
-      "Cook adaptive: met with %d rungs, exit %d" % (len(rows), proc.returncode))
-if rows:
+# literature's 23.96 agrees to its 4 digits). Adaptive rungs converge unevenly (observed orders 2.8,
+# 6.2, 3.9): the ladder stops on a steady order (two successive orders within a factor 1.5), or on
+# an unsteady one only with a safety factor of 10. At 0.01 % it must stop on a steady order with a
+# trustworthy estimate, on far fewer DoFs than uniform refinement (132k for an estimate under
+# 0.01 %); at 0.05 % the safety factor must still keep the true error within the target.
+cook_adaptive = ["Target/Quantities=displacement_mid_y", "Target/Allow finite strain=false", "Geometry/Parameters/n=4",
+                 "Target/Refinement=adaptive", "Target/Maximum refinements=10"]
+for target in (0.01, 0.05):
+    proc, summary, rows = ladder(cook, cook_adaptive + ["Target/Relative error=%g" % target])
+    check(proc.returncode == 0 and rows and int(rows[-1]["adaptive_cycles"]) == len(rows) - 1,
+          "Cook adaptive %g %%: met with %d rungs, exit %d" % (target, len(rows), proc.returncode))
+    if not rows:
+        continue
     for r in rows:
-        print("  Cook adaptive rung %s: %s DoFs, value %s, estimate %s" % (r["rung"], r["dofs"], r["displacement_mid_y"], r["estimate_displacement_mid_y"]))
+        v = float(r["displacement_mid_y"])
+        print("  Cook adaptive rung %s: %s DoFs, value %.8f, true error %.3g %%, estimate %s" % (
+            r["rung"], r["dofs"], v, 100 * abs(v - 23.9677) / 23.9677, r["estimate_displacement_mid_y"]))
     final = float(rows[-1]["displacement_mid_y"])
     true = abs(final - 23.9677) / 23.9677
-    eff = float(rows[-1]["estimate_displacement_mid_y"]) / true if true > 0 else float("inf")
-    check(true <= 0.0005, "Cook adaptive: final within 0.05 %% of the converged value (%.3g %%)" % (100 * true))
-    check(0.5 <= eff <= 3, "Cook adaptive: effectivity of the estimate it stopped on %.2f" % eff)
-    check(float(rows[-1]["dofs"]) < 33282 / 2, "Cook adaptive: %s DoFs against 33282 uniform" % rows[-1]["dofs"])
+    check(true <= target / 100, "Cook adaptive %g %%: final within the target of the converged value (%.3g %%)" % (target, 100 * true))
+    if target == 0.01:
+        eff = float(rows[-1]["estimate_displacement_mid_y"]) / true if true > 0 else float("inf")
+        check(0.5 <= eff <= 3, "Cook adaptive: effectivity of the steady estimate it stopped on %.2f" % eff)
+        check(float(rows[-1]["dofs"]) < 132098 / 4, "Cook adaptive: %s DoFs against 132098 uniform" % rows[-1]["dofs"])
 
 hinge = os.path.join(cases, "flexure_hinge.prm")
 for degrees, nonlinear in ((2, False), (40, True)):

@@ -197,7 +197,8 @@ namespace compliant
             // Only an observed order ends the climb: an assumed one is optimistic at singularities.
             // Adaptive meshes converge unevenly while the refinement finds the singular corners
             // (Cook's membrane: observed orders 2.8, 6.2, 3.9 on the first rungs, estimates 6x too
-            // small): there the order must also hold steady over two successive triples.
+            // small): there the order must also hold steady over two successive triples (within a
+            // factor 1.5).
             bool steady = true;
             if (target.adaptive)
               {
@@ -213,7 +214,10 @@ namespace compliant
                 else
                   unsteady.erase(n);
               }
-            met = met && e.available && e.order_observed && steady && e.relative <= target.relative_error;
+            // An unsteady order is trusted with a safety factor of 10 (the worst effectivity on
+            // such rungs of Cook's membrane was 0.16).
+            const double safety = steady ? 1 : 10;
+            met = met && e.available && e.order_observed && safety * e.relative <= target.relative_error;
           }
         if (k == 0)
           {
@@ -249,7 +253,7 @@ namespace compliant
               else if (!e.order_observed)
                 rung.decision += " " + n + " " + e.note + ", one more rung to observe it;";
               else if (unsteady.count(n))
-                rung.decision += " " + n + " " + unsteady[n] + ";";
+                rung.decision += " " + n + " " + unsteady[n] + " and 10 x estimate > target;";
             if (target.adaptive)
               adaptive_refinements.push_back(kelly_refine_flags(*model.problem, target.refined_fraction));
           }
