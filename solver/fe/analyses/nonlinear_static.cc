@@ -237,6 +237,11 @@ namespace compliant
       summary.quantities["newton_iterations"] = total_newton;
       if (summary_limit_load_factor >= 0)
         summary.quantities["last_stable_load_factor"] = summary_limit_load_factor;
+      summary.quantities["time_tangent_assembly"] = problem.tangent_assembly_seconds;
+      summary.quantities["time_linear_solves"]    = problem.linear_solve_seconds;
+      summary.quantities["linear_solves"]         = problem.total_linear_solves;
+      if (problem.total_linear_iterations > 0)
+        summary.quantities["linear_iterations"] = problem.total_linear_iterations;
       summary.quantities["time_total"]        = timer.wall_time();
       finish_run(context, summary, problem.expression_variables(),
                  [&](const std::string &directory) { write_fields(problem, directory); });

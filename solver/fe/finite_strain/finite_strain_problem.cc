@@ -2,6 +2,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_dgp.h>
 #include <deal.II/fe/fe_q.h>
@@ -486,7 +487,9 @@ namespace compliant
           {
             ghosted                = u;
             const auto constraints = make_constraints(target, false, ghosted);
+            Timer      assembly_timer;
             assemble(ghosted, target, &constraints, true, rhs);
+            tangent_assembly_seconds += assembly_timer.wall_time();
             const double r = rhs.l2_norm();
             report.residual = r;
             if (std::getenv("COMPLIANT_DEBUG_NEWTON") &&
@@ -508,6 +511,7 @@ namespace compliant
             if (!std::isfinite(r))
               throw StepFailure("the residual is not finite");
             du = 0;
+            Timer solve_timer;
             if (iterative && !iterative_failed)
               try
                 {
@@ -525,6 +529,7 @@ namespace compliant
             else
               solve_linear_system(tangent, du, rhs, {}, direct);
             ++total_linear_solves;
+            linear_solve_seconds += solve_timer.wall_time();
             constraints.distribute(du);
             // Backtracking only against a step that inverts elements or blows the residual up
             // by orders of magnitude: a plain residual-decrease test rejects good Newton steps

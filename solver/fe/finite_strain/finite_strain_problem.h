@@ -118,9 +118,11 @@ namespace compliant
 
     dealii::PETScWrappers::MPI::Vector solution; // ghosted, converged state
     unsigned int                       total_linear_solves = 0;
+    double                             tangent_assembly_seconds = 0, linear_solve_seconds = 0;
     // CG iterations over all Newton steps solved iteratively; set once CG failed (MUMPS after).
     unsigned int                       total_linear_iterations = 0;
     bool                               iterative_failed        = false;
+
 
   private:
     // The law's response at one point: plane stress (2D) or plane strain/3D.
