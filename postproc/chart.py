@@ -13,7 +13,8 @@ import matplotlib.pyplot as plt
 def plot_study(table, spec, out_dir):
     x_name, y_name = spec.split(":", 1)
     with open(table) as f:
-        rows = list(csv.DictReader(f))
+        # failed points of a study have a status other than ok and no values
+        rows = [r for r in csv.DictReader(f) if r.get("status", "ok") == "ok"]
     x = [float(r[x_name]) for r in rows]
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.plot(x, [float(r[y_name]) for r in rows], "o-", label="FE: " + y_name)

@@ -7,11 +7,20 @@ summaries into one CSV table (and optionally a chart).
 
 --vary "Path=v1,v2,v3" or "Path=start:stop:count"; several --vary are combined as a product
 (--zip pairs them instead). Extra --set options are passed to every run.
-Columns: the varied values, every quantity, and for each closed-form comparison the reference
-(ref:<quantity>~<formula>) and the relative difference (diff:<quantity>~<formula>).
+Columns: the varied values, status (ok, or failed: and the solver's message), every quantity, and
+for each closed-form comparison the reference (ref:<quantity>~<formula>) and the relative difference
+(diff:<quantity>~<formula>).
+
+Each point is written to <out>/points/ as it finishes; a failed point is recorded and the study
+goes on (exit code 3 at the end); running the same command again resumes: finished points are read
+back, failed and missing ones are run. --jobs N runs N points at once; --point K runs one point (a
+scheduler job array: sbatch --array=0-<n-1> ... study.py ... --point $SLURM_ARRAY_TASK_ID, then one
+plain run collects the table).
 """
 import argparse
+import concurrent.futures
 import csv
+import hashlib
 import itertools
 import json
 import os
@@ -98,6 +107,10 @@ def main():
                          "is the given value, else the closed form of QOI's comparison, else the study's "
                          "most expensive run (then the error is an estimate and the chart says so)")
     ap.add_argument("--target", type=float, default=None, help="percent, drawn on --accuracy charts")
+    ap.add_argument("--jobs", type=int, default=1, help="points run at once (each uses --np ranks)")
+    ap.add_argument("--point", type=int, default=None,
+                    help="run only point K (0-based, in the order of the table), e.g. a Slurm job array "
+                         "task: --point $SLURM_ARRAY_TASK_ID; a later run without --point collects them")
     args = ap.parse_args()
 
     names, lists = [], []
@@ -111,33 +124,104 @@ def main():
     out = args.out or os.path.join("results", "study_" + os.path.splitext(os.path.basename(args.case))[0])
     os.makedirs(out, exist_ok=True)
 
-    rows = []
-    for combo in combos:
-        sets = args.set + ["%s=%s" % (n, v) for n, v in zip(names, combo)]
-        try:
-            summary = run_case(args.case, sets, args.np)
-        except RuntimeError as e:
-            sys.exit("error: " + str(e))
-        row = {n.split("/")[-1]: v for n, v in zip(names, combo)}
-        row.update(flatten(summary))
-        rows.append(row)
-        print("  ".join("%s=%s" % (n.split("/")[-1], v) for n, v in zip(names, combo)), "done", flush=True)
+    # Every point is written as it finishes (points/<key>.json, atomically), so a study that is
+    # interrupted or hits a failing point keeps its finished points, and the same command resumes:
+    # finished points are read back, failed ones are run again.
+    points_dir = os.path.join(out, "points")
+    os.makedirs(points_dir, exist_ok=True)
 
-    columns = list(rows[0].keys())
-    for r in rows[1:]:
-        columns += [k for k in r if k not in columns]
+    def point_sets(combo):
+        return args.set + ["%s=%s" % (n, v) for n, v in zip(names, combo)]
+
+    def run_point(index):
+        combo = combos[index]
+        sets = point_sets(combo)
+        key = hashlib.sha1(json.dumps([os.path.abspath(args.case), sets]).encode()).hexdigest()[:16]
+        done, failed = os.path.join(points_dir, key + ".json"), os.path.join(points_dir, key + ".failed.json")
+        if os.path.exists(done):
+            with open(done) as f:
+                return dict(json.load(f), resumed=True)
+        try:
+            record = {"sets": sets, "status": "ok", "summary": run_case(args.case, sets, args.np)}
+            target = done
+        except RuntimeError as e:
+            record = {"sets": sets, "status": "failed", "message": str(e)}
+            target = failed
+        with open(target + ".partial", "w") as f:
+            json.dump(record, f)
+        os.replace(target + ".partial", target)
+        if record["status"] == "ok" and os.path.exists(failed):
+            os.remove(failed)
+        return record
+
+    def reason(message):
+        """The solver's own message (its 'error:' line), not mpirun's closing banner."""
+        lines = [l.strip() for l in message.strip().splitlines() if l.strip() and not l.startswith("---")]
+        errors = [l for l in lines if l.startswith("error:")]
+        return (errors or lines or ["unknown failure"])[0]
+
+    def label(combo):
+        return "  ".join("%s=%s" % (n.split("/")[-1], v) for n, v in zip(names, combo))
+
+    if args.point is not None:  # one point of a scheduler job array
+        if not 0 <= args.point < len(combos):
+            sys.exit("error: --point %d: the study has points 0 to %d" % (args.point, len(combos) - 1))
+        record = run_point(args.point)
+        print(label(combos[args.point]), record["status"])
+        sys.exit(0 if record["status"] == "ok" else 3)
+
+    records = [None] * len(combos)
     table = os.path.join(out, "study.csv")
-    with open(table + ".partial", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=columns)
-        w.writeheader()
-        w.writerows(rows)
-    os.replace(table + ".partial", table)
+
+    def write_table():
+        rows = []
+        for combo, record in zip(combos, records):
+            if record is None:
+                continue
+            row = {n.split("/")[-1]: v for n, v in zip(names, combo)}
+            if record["status"] == "ok":
+                row["status"] = "ok"
+                row.update(flatten(record["summary"]))
+            else:
+                row["status"] = "failed: " + reason(record["message"])[:300]
+            rows.append(row)
+        if not rows:
+            return rows
+        columns = list(rows[0].keys())
+        for r in rows[1:]:
+            columns += [k for k in r if k not in columns]
+        with open(table + ".partial", "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=columns)
+            w.writeheader()
+            w.writerows(rows)
+        os.replace(table + ".partial", table)
+        return rows
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = {pool.submit(run_point, i): i for i in range(len(combos))}
+        for future in concurrent.futures.as_completed(futures):
+            i = futures[future]
+            records[i] = future.result()
+            status = records[i]["status"] + (" (resumed)" if records[i].get("resumed") else "")
+            if records[i]["status"] != "ok":
+                status += ": " + reason(records[i]["message"])[:200]
+            print(label(combos[i]), status, flush=True)
+            write_table()
+    rows = [r for r in write_table() if r["status"] == "ok"]
     print("table:", table)
+    failures = [label(c) for c, r in zip(combos, records) if r["status"] != "ok"]
+    if failures:
+        print("error: %d of %d points failed (recorded in the table; rerun the same command to retry "
+              "them): %s" % (len(failures), len(combos), "; ".join(failures)), file=sys.stderr)
+    if not rows:
+        sys.exit(3)
     for spec in args.plot:
         from chart import plot_study  # local module, imported only when a chart is asked for
         print("chart:", plot_study(table, spec, out))
     for spec in args.accuracy:
         print("chart:", accuracy_chart(rows, spec, args.target, out))
+    if failures:
+        sys.exit(3)
 
 
 def accuracy_chart(rows, spec, target, out):

@@ -64,6 +64,9 @@ bad("unknown boundary name", [case, "--set", "Boundary conditions/Clamped=bse"],
 bad("unknown body name", [case, "--set", "Material/Materials=bdy: steel"], ["bdy", "body"])
 bad("unknown material", [case, "--set", "Material/Materials=*: unobtainium"], ["unobtainium", "semiflex"])
 bad("unknown geometry parameter", [case, "--set", "Geometry/Parameters/length=3"], ["length"])
+bad("geometry gmsh cannot mesh", [case, "--set", "Geometry/Parameters/l=0"], ["flexure_hinge_2d.geo", "gmsh could not", "geometry parameters"])
+bad("refinement beyond memory", [case, "--set", "Discretization/Global refinements=8", "--set", "Geometry/Parameters/nt=8"],
+    ["Global refinements = 8", "GB available"])
 bad("missing mesh file", [case, "--set", "Geometry/Mesh file=nothing.geo"], ["nothing.geo"])
 bad("unknown closed form", [case, "--set", "Comparison/Checks=rotational_stiffness_drive ~ prbm_pivot(E=E)"], ["prbm_pivot", "Comparison/Checks"])
 bad("bad expression", [case, "--set", "Boundary conditions/Rotation=drive: degrees=1, center=q/2 0"], ["center", "q/2"])

@@ -125,7 +125,7 @@ namespace compliant
                                   std::to_string(dim) + "D mesh, but '" + parameters.mesh_file +
                                   "' is " + std::to_string(geometry.dimension) + "D");
     create_triangulation(triangulation, geometry, parameters.global_refinements,
-                         parameters.adaptive_refinements);
+                         parameters.adaptive_refinements, parameters.element_degree);
 
     const unsigned int degree = parameters.element_degree;
     if (triangulation.all_reference_cells_are_hyper_cube())

@@ -119,7 +119,7 @@ namespace compliant
       throw std::invalid_argument("Finite strain/Formulation: plane stress is displacement-only "
                                   "(the thickness strain takes up the volume change, nothing locks)");
     create_triangulation(triangulation, geometry, parameters.global_refinements,
-                         parameters.adaptive_refinements);
+                         parameters.adaptive_refinements, parameters.element_degree);
     if (!triangulation.all_reference_cells_are_hyper_cube())
       throw std::invalid_argument("Finite strain: the mesh must be quadrilaterals/hexahedra");
 

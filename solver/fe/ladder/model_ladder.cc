@@ -9,10 +9,12 @@
 #include "quantities/comparison.h"
 #include "ladder/adaptive_refinement.h"
 #include "ladder/error_estimate.h"
+#include "mesh/memory_estimate.h"
 #include "output/field_output.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -134,6 +136,8 @@ namespace compliant
     std::vector<Rung>                  rungs;
     std::map<std::string, std::vector<double>> history;
     std::vector<double>                mesh_sizes; // h = N^(-1/dim)
+    std::uint64_t                      last_cells = 0;
+    std::string                        too_large; // why the climb stopped short, if it did
     std::vector<std::vector<bool>>     adaptive_refinements;
     std::map<std::string, double>      orders;   // adaptive: the last observed order, 0 if none
     std::map<std::string, std::string> unsteady; // adaptive: why an estimate cannot stop yet
@@ -158,8 +162,24 @@ namespace compliant
           rung_parameters->adaptive_refinements = adaptive_refinements;
         else
           rung_parameters->global_refinements = p.global_refinements + k;
+        if (k > 0 && !target.adaptive)
+          try
+            {
+              // One more uniform refinement of the last rung's mesh must fit in memory.
+              refuse_refinement_beyond_memory(last_cells, dim, 1, p.element_degree,
+                                              dealii::Utilities::MPI::n_mpi_processes(context.communicator));
+            }
+          catch (const ModelTooLarge &e)
+            {
+              too_large = e.what();
+              rungs.back().decision = "target NOT met: the next rung would not fit in memory";
+              if (root)
+                std::cout << "  (d) no rung " << k + 1 << ": " << too_large << std::endl;
+              break;
+            }
         dealii::Timer rung_timer;
         auto model = solve_linear_static_model<dim>(context, *rung_parameters);
+        last_cells = model.problem->triangulation.n_active_cells();
         if (model.stopped_for_check)
           return 0;
         if (target.adaptive && !model.problem->triangulation.all_reference_cells_are_hyper_cube())
@@ -329,7 +349,9 @@ namespace compliant
     RunSummary  summary =
       start_summary(chosen_context, problem.triangulation.all_reference_cells_are_hyper_cube());
     summary.settings.insert({"solver", problem.solver_method});
-    summary.settings.insert({"ladder", met ? "target met" : "target not met"});
+    summary.settings.insert({"ladder", met ? "target met" :
+                                             too_large.empty() ? "target not met" :
+                                                                 "target not met: " + too_large});
     summary.settings.insert({"ladder_geometric_check", geometric_reason});
     summary.quantities = chosen.quantities;
     summary.quantities["ladder_rungs"]         = rungs.size();

@@ -22,8 +22,20 @@ namespace compliant
         gmsh::initialize();
         gmsh::option::setNumber("General.Terminal", 0);
         gmsh::option::setNumber("General.Verbosity", 1);
+        // gmsh's API throws at the first error, inside its OpenMP meshing region, where an
+        // exception terminates the process: let errors be logged instead, and ask afterwards.
+        gmsh::option::setNumber("General.AbortOnError", 0);
       }
-      ~GmshSession() { gmsh::finalize(); }
+      ~GmshSession()
+      {
+        try // may run while an exception unwinds: gmsh must not throw a second one
+          {
+            gmsh::finalize();
+          }
+        catch (...)
+          {
+          }
+      }
     };
 
     bool file_exists(const std::string &file)
@@ -50,6 +62,16 @@ namespace compliant
         }
     }
 
+    // gmsh logs errors (General.AbortOnError = 0): the first one logged ends the run, by name.
+    void throw_if_gmsh_error(const std::string &file, const std::string &stage)
+    {
+      std::string error;
+      gmsh::logger::getLastError(error);
+      if (!error.empty())
+        throw std::runtime_error("gmsh could not " + stage + " '" + file + "': " + error +
+                                 " (check the geometry parameters)");
+    }
+
     // The ONELAB JSON has "help":"..."; a full JSON parser is not worth it for one field.
     std::string help_of(const std::string &name)
     {
@@ -64,7 +86,44 @@ namespace compliant
     }
   } // namespace
 
+  std::vector<GeometryParameter> read_geometry_parameters_unguarded(const std::string &file);
+  MeshedGeometry mesh_geometry_unguarded(const std::string &file, const std::map<std::string, double> &parameters);
+
+  namespace
+  {
+    // gmsh's C++ API reports errors by throwing std::string (or const char *): turn them into
+    // exceptions that name the file, so that a geometry gmsh cannot build is a clear input error.
+    template <typename Function>
+    auto with_gmsh_errors(const std::string &file, Function &&function)
+    {
+      try
+        {
+          return function();
+        }
+      catch (const std::string &message)
+        {
+          throw std::runtime_error("gmsh could not build the geometry of '" + file + "': " + message +
+                                   " (check the geometry parameters)");
+        }
+      catch (const char *message)
+        {
+          throw std::runtime_error("gmsh could not build the geometry of '" + file + "': " +
+                                   std::string(message) + " (check the geometry parameters)");
+        }
+    }
+  } // namespace
+
   std::vector<GeometryParameter> read_geometry_parameters(const std::string &file)
+  {
+    return with_gmsh_errors(file, [&] { return read_geometry_parameters_unguarded(file); });
+  }
+
+  MeshedGeometry mesh_geometry(const std::string &file, const std::map<std::string, double> &parameters)
+  {
+    return with_gmsh_errors(file, [&] { return mesh_geometry_unguarded(file, parameters); });
+  }
+
+  std::vector<GeometryParameter> read_geometry_parameters_unguarded(const std::string &file)
   {
     GmshSession session;
     open_or_throw(file);
@@ -83,13 +142,14 @@ namespace compliant
     return parameters;
   }
 
-  MeshedGeometry mesh_geometry(const std::string &file,
-                               const std::map<std::string, double> &parameters)
+  MeshedGeometry mesh_geometry_unguarded(const std::string &file,
+                                         const std::map<std::string, double> &parameters)
   {
     GmshSession session;
     for (const auto &[name, value] : parameters)
       gmsh::onelab::setNumber(parameter_prefix + name, {value});
     open_or_throw(file);
+    throw_if_gmsh_error(file, "build the geometry of");
 
     MeshedGeometry result;
     result.dimension = gmsh::model::getDimension();
@@ -107,6 +167,7 @@ namespace compliant
           {
             throw std::runtime_error("gmsh failed to mesh '" + file + "'");
           }
+        throw_if_gmsh_error(file, "mesh");
       }
 
     gmsh::vectorpair groups;

@@ -1,6 +1,10 @@
 #include "mesh/mesh_reader.h"
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/grid/grid_in.h>
+
+#include "mesh/memory_estimate.h"
 
 #include <sstream>
 #include <stdexcept>
@@ -11,12 +15,17 @@ namespace compliant
   template <int dim>
   void create_triangulation(dealii::Triangulation<dim> &triangulation,
                             const MeshedGeometry &geometry, const unsigned int global_refinements,
-                            const std::vector<std::vector<bool>> &adaptive_refinements)
+                            const std::vector<std::vector<bool>> &adaptive_refinements,
+                            const unsigned int element_degree)
   {
     dealii::GridIn<dim> grid_in;
     grid_in.attach_triangulation(triangulation);
     std::istringstream in(geometry.msh_text);
     grid_in.read_msh(in);
+    const auto *parallel =
+      dynamic_cast<const dealii::parallel::TriangulationBase<dim> *>(&triangulation);
+    refuse_refinement_beyond_memory(triangulation.n_active_cells(), dim, global_refinements, element_degree,
+                                    parallel ? dealii::Utilities::MPI::n_mpi_processes(parallel->get_communicator()) : 1);
     triangulation.refine_global(global_refinements);
     for (const auto &flags : adaptive_refinements)
       {
@@ -34,7 +43,7 @@ namespace compliant
   }
 
   template void create_triangulation<2>(dealii::Triangulation<2> &, const MeshedGeometry &, unsigned int,
-                                       const std::vector<std::vector<bool>> &);
+                                       const std::vector<std::vector<bool>> &, unsigned int);
   template void create_triangulation<3>(dealii::Triangulation<3> &, const MeshedGeometry &, unsigned int,
-                                       const std::vector<std::vector<bool>> &);
+                                       const std::vector<std::vector<bool>> &, unsigned int);
 } // namespace compliant
