@@ -6,6 +6,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.join(here, "..", "..")
@@ -16,7 +17,7 @@ failed = []
 
 def run(args, np=2):
     cmd = ["mpirun", "-np", str(np), solver] + args
-    p = subprocess.run(cmd, capture_output=True, text=True)
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
     return p.returncode, p.stdout, p.stderr
 
 
@@ -69,6 +70,18 @@ bad("refinement beyond memory", [case, "--set", "Discretization/Global refinemen
     ["Global refinements = 8", "GB available"])
 bad("missing mesh file", [case, "--set", "Geometry/Mesh file=nothing.geo"], ["nothing.geo"])
 bad("unknown closed form", [case, "--set", "Comparison/Checks=rotational_stiffness_drive ~ prbm_pivot(E=E)"], ["prbm_pivot", "Comparison/Checks"])
+
+# Output/Directory that is a file: refused at once on every rank (it used to hang after the solve).
+blocker = tempfile.NamedTemporaryFile("w", delete=False)
+blocker.write("keep")
+blocker.close()
+for target in (blocker.name, os.path.join(blocker.name, "sub")):
+    start = time.time()
+    rc, out, err = run([case, "--set", "Output/Directory=" + target])
+    check(rc == 2 and "Output/Directory" in err and "not a directory" in err and time.time() - start < 60
+          and open(blocker.name).read() == "keep",
+          "output directory %s: exit %d in %.1f s, message names Output/Directory" % (target, rc, time.time() - start))
+os.remove(blocker.name)
 bad("bad expression", [case, "--set", "Boundary conditions/Rotation=drive: degrees=1, center=q/2 0"], ["center", "q/2"])
 bad("point outside the mesh", [case, "--set", "Quantities/Points=far: 1000 0"], ["far", "outside"])
 bad("plane stress with the mixed formulation", [case, "--set", "Analysis=nonlinear static", "--set", "Model=plane stress",

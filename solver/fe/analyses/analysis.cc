@@ -1,5 +1,6 @@
 #include "analyses/analysis.h"
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include "analyses/linear_static.h"
@@ -7,11 +8,41 @@
 #include "analyses/linkage.h"
 #include "analyses/modal.h"
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <iostream>
 
 namespace compliant
 {
+  void check_output_directory(const CaseParameters &p, MPI_Comm communicator)
+  {
+    namespace fs = std::filesystem;
+    std::string error;
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::error_code ec;
+        fs::path        existing = fs::absolute(p.output_directory, ec);
+        if (fs::exists(existing, ec) && !fs::is_directory(existing, ec))
+          error = "'" + p.output_directory + "' exists and is not a directory";
+        else
+          {
+            while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
+              existing = existing.parent_path();
+            if (!fs::is_directory(existing, ec))
+              error = "'" + existing.string() + "' (on the way to '" + p.output_directory +
+                      "') is not a directory";
+            else if (access(existing.c_str(), W_OK | X_OK) != 0)
+              error = "'" + existing.string() + "' is not writable, so '" + p.output_directory +
+                      "' cannot be written";
+          }
+      }
+    error = dealii::Utilities::MPI::broadcast(communicator, error, 0);
+    if (!error.empty())
+      throw InputError("case file '" + p.case_file + "', Output/Directory: " + error +
+                       "; give a directory you can write");
+  }
+
   const std::vector<Analysis> &analyses()
   {
     static const std::vector<Analysis> list = {linear_static_analysis(),

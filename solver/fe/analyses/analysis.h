@@ -46,6 +46,11 @@ namespace compliant
   // A summary with the settings every analysis records (analysis, model, mesh, degree, cells).
   RunSummary start_summary(const RunContext &context, bool hypercube_cells);
 
+  // Before any work: Output/Directory must be a writable directory or creatable in one. Checked on
+  // rank 0 and agreed on by every rank (an error on one rank alone would hang the others), so a
+  // run that cannot write its results stops at once with a message, not after the solve.
+  void check_output_directory(const CaseParameters &parameters, MPI_Comm communicator);
+
   // Shared end of a run: derived quantities, closed-form comparisons, fields, summary, table.
   // Everything that can fail on user input happens before the first file is written.
   void finish_run(const RunContext &context, RunSummary &summary,

@@ -78,6 +78,7 @@ int main(int argc, char **argv)
         }
       if (p.case_file.empty())
         throw InputError("no case file given (try --help)");
+      check_output_directory(p, comm);
       const MeshedGeometry geometry = mesh_on_rank_zero(p, comm);
       return find_analysis(p.analysis).run({p, prm, geometry, command_line.check, comm});
     }
