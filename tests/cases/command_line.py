@@ -65,6 +65,8 @@ bad("unknown boundary name", [case, "--set", "Boundary conditions/Clamped=bse"],
 bad("unknown body name", [case, "--set", "Material/Materials=bdy: steel"], ["bdy", "body"])
 bad("unknown material", [case, "--set", "Material/Materials=*: unobtainium"], ["unobtainium", "semiflex"])
 bad("unknown geometry parameter", [case, "--set", "Geometry/Parameters/length=3"], ["length"])
+bad("load expression with a syntax error", [case, "--set", "Loads/Traction=drive: 0 -1/(x-"], ["Loads/Traction", "flexure_hinge.prm"])
+bad("load expression that is NaN", [case, "--set", "Loads/Traction=drive: 0 1/(x-x)"], ["not finite", "Loads/Traction", "flexure_hinge.prm"])
 bad("geometry gmsh cannot mesh", [case, "--set", "Geometry/Parameters/l=0"], ["flexure_hinge_2d.geo", "gmsh could not", "geometry parameters"])
 bad("refinement beyond memory", [case, "--set", "Discretization/Global refinements=8", "--set", "Geometry/Parameters/nt=8"],
     ["Global refinements = 8", "GB available"])

@@ -33,7 +33,14 @@ namespace compliant
         return model;
       }
 
-    problem.assemble();
+    try
+      {
+        problem.assemble(); // load expressions are evaluated here
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("case file '" + p.case_file + "': " + e.what());
+      }
     problem.solve();
     if (root)
       {

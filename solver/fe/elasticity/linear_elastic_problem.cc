@@ -24,6 +24,7 @@
 
 #include <deal.II/lac/solver_control.h>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -373,6 +374,12 @@ namespace compliant
       system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     external_forces.compress(VectorOperation::add);
+    // A load expression that divides by zero somewhere gives NaN or infinity: say so here, not as
+    // a failed (or crashed) solve.
+    if (!std::isfinite(external_forces.l2_norm()))
+      throw std::invalid_argument("Loads: the loads are not finite (NaN or infinity) somewhere on "
+                                  "the loaded boundaries or bodies: check the expressions of "
+                                  "Loads/Traction, Loads/Body force and Loads/Total force");
     statistics.assembly_seconds = timer.wall_time();
   }
 
