@@ -7,7 +7,10 @@
 #include "elasticity/linear_elastic_problem.h"
 #include "finite_strain/finite_strain_problem.h"
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
+#include <functional>
 #include <type_traits>
 
 namespace compliant
@@ -41,21 +44,45 @@ namespace compliant
                                       inputs.solution_values[k][dim] : 0.0;
             double       sigma_zz;
             const auto   sigma = problem.cauchy_stress(grad, material, pressure, sigma_zz);
-            unsigned int                  c     = 0;
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                computed[k][c++] = strain[i][j];
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                computed[k][c++] = sigma[i][j];
+            // Every component as its own scalar (deal.II 9.4 writes tensors to HDF5/XDMF as
+            // dim-component vectors and drops the rest), then principal stresses and von Mises.
+            unsigned int c = 0;
+            for (const auto &[i, j] : components())
+              computed[k][c++] = strain[i][j];
+            for (const auto &[i, j] : components())
+              computed[k][c++] = sigma[i][j];
+            if (dim == 2)
+              computed[k][c++] = sigma_zz;
+            std::array<double, 3> principal{{sigma_zz, sigma_zz, sigma_zz}};
+            const auto            in_plane = eigenvalues(sigma);
+            for (unsigned int d = 0; d < dim; ++d)
+              principal[d] = in_plane[d];
+            std::sort(principal.begin(), principal.end(), std::greater<double>());
+            for (const double p : principal)
+              computed[k][c++] = p;
             computed[k][c] = problem.von_mises(sigma, sigma_zz);
           }
       }
 
+      // xx, yy, (zz,) xy, (xz, yz): the independent components of a symmetric tensor.
+      static std::vector<std::pair<unsigned int, unsigned int>> components()
+      {
+        if (dim == 2)
+          return {{0, 0}, {1, 1}, {0, 1}};
+        return {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+      }
+
       std::vector<std::string> get_names() const override
       {
-        std::vector<std::string> names(dim * dim, "strain");
-        names.insert(names.end(), dim * dim, "stress");
+        const char              axis[] = "xyz";
+        std::vector<std::string> names;
+        for (const char *field : {"strain", "stress"})
+          for (const auto &[i, j] : components())
+            names.push_back(std::string(field) + "_" + axis[i] + axis[j]);
+        if (dim == 2) // plane strain: lambda tr(eps); plane stress: 0
+          names.push_back("stress_zz");
+        for (const char *principal : {"stress_1", "stress_2", "stress_3"})
+          names.push_back(principal);
         names.push_back("von_mises");
         return names;
       }
@@ -63,10 +90,8 @@ namespace compliant
       std::vector<DataComponentInterpretation::DataComponentInterpretation>
       get_data_component_interpretation() const override
       {
-        std::vector<DataComponentInterpretation::DataComponentInterpretation> i(
-          2 * dim * dim, DataComponentInterpretation::component_is_part_of_tensor);
-        i.push_back(DataComponentInterpretation::component_is_scalar);
-        return i;
+        return std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+          get_names().size(), DataComponentInterpretation::component_is_scalar);
       }
 
       UpdateFlags get_needed_update_flags() const override
