@@ -228,6 +228,8 @@ namespace compliant
         start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
       summary.settings.insert({"law", settings.law});
       summary.settings.insert({"formulation", settings.mixed ? "mixed" : "displacement"});
+      summary.settings.insert({"solver", problem.linear_solver_description()});
+      summary.settings.insert({"solver_requested", context.parameters.solver_method});
       summary.settings.insert({"status", failure.empty() ? "completed" : failure});
       summary.settings.insert({"curve", curve_file});
       summary.quantities = quantities;
@@ -240,6 +242,8 @@ namespace compliant
       summary.quantities["time_tangent_assembly"] = problem.tangent_assembly_seconds;
       summary.quantities["time_linear_solves"]    = problem.linear_solve_seconds;
       summary.quantities["linear_solves"]         = problem.total_linear_solves;
+      if (problem.preconditioner_setup_seconds > 0)
+        summary.quantities["time_preconditioner_setup"] = problem.preconditioner_setup_seconds;
       if (problem.total_linear_iterations > 0)
         summary.quantities["linear_iterations"] = problem.total_linear_iterations;
       summary.quantities["time_total"]        = timer.wall_time();

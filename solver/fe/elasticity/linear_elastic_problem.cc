@@ -16,6 +16,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include "elasticity/rigid_rotation.h"
+#include "fast_solver/elasticity_operator.h"
 #include "fast_solver/p_multigrid_solver.h"
 #include "linear_algebra/rigid_body_modes.h"
 #include "elasticity/von_mises.h"
@@ -445,12 +446,17 @@ namespace compliant
         lambda = 2 * lambda * mu / (lambda + 2 * mu);
       return std::make_pair(lambda * thickness, mu * thickness);
     };
-    fast_solver::PMultigridSolver<dim> solver(
+    using Operator = fast_solver::ElasticityOperator<dim, double>;
+    fast_solver::PMultigridSolver<dim, Operator> solver(
       *mapping, dof_handler,
       [this](const DoFHandler<dim> &dofs, AffineConstraints<double> &level_constraints) {
         add_support_constraints(dofs, level_constraints, true);
       },
-      lame, settings, communicator);
+      [&lame](Operator &level_operator, const Mapping<dim> &level_mapping,
+              const DoFHandler<dim> &dofs, const AffineConstraints<double> &level_constraints) {
+        level_operator.reinit(level_mapping, dofs, level_constraints, lame);
+      },
+      settings, communicator);
     statistics.preconditioner_setup_seconds = solver.statistics().setup_seconds;
     statistics.level_dofs.assign(solver.statistics().level_dofs.begin(),
                                  solver.statistics().level_dofs.end());

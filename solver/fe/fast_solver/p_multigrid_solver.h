@@ -1,5 +1,6 @@
-// The fast linear solver for elasticity on quadrilaterals/hexahedra: conjugate gradients on the
-// matrix-free operator, preconditioned by a p-multigrid V-cycle (degree p, p-1, ..., 1 on the same
+// The fast linear solver for elasticity on quadrilaterals/hexahedra: conjugate gradients on a
+// matrix-free operator (small-strain ElasticityOperator, or the finite-strain TangentOperator of a
+// Newton step), preconditioned by a p-multigrid V-cycle (degree p, p-1, ..., 1 on the same
 // mesh, Chebyshev smoothing on the diagonal) whose degree-1 level is solved by AMG (PETSc GAMG with
 // block size and rigid-body modes) or, for thin parts, by MUMPS. Only the degree-1 matrix is
 // ever stored.
@@ -18,7 +19,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/petsc_vector.h>
 
-#include "fast_solver/elasticity_operator.h"
+#include <deal.II/lac/petsc_sparse_matrix.h>
 
 #include <functional>
 #include <memory>
@@ -50,6 +51,7 @@ namespace compliant::fast_solver
   {
     unsigned int                         iterations    = 0;
     unsigned int                         coarse_iterations = 0; // inner CG, summed
+    double                               lifted_rhs_norm   = 0; // |f - K g| of the last solve
     double                               setup_seconds = 0;
     double                               largest_aspect_ratio = 1;
     unsigned int                         smoothing_degree = 0;
@@ -58,7 +60,9 @@ namespace compliant::fast_solver
     std::vector<dealii::types::global_dof_index> level_dofs; // coarse to fine
   };
 
-  template <int dim>
+  // Operator: ElasticityOperator<dim, double> or TangentOperator<dim, double> (instantiated in
+  // p_multigrid_solver.cc and p_multigrid_tangent.cc).
+  template <int dim, typename Operator>
   class PMultigridSolver
   {
   public:
@@ -66,12 +70,22 @@ namespace compliant::fast_solver
     // object comes cleared and is closed by the caller.
     using LevelConstraints =
       std::function<void(const dealii::DoFHandler<dim> &, dealii::AffineConstraints<double> &)>;
+    // Sets up a level's operator (reinit with the problem's coefficients or state).
+    using LevelSetup =
+      std::function<void(Operator &, const dealii::Mapping<dim> &, const dealii::DoFHandler<dim> &,
+                         const dealii::AffineConstraints<double> &)>;
 
-    // Builds every level; the mapping and fine DoFHandler must outlive the solver.
+    // Builds every level and the preconditioner; the mapping and fine DoFHandler must outlive
+    // the solver.
     PMultigridSolver(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &fine_dofs,
-                     const LevelConstraints &level_constraints, const LameParameters &lame,
+                     const LevelConstraints &level_constraints, const LevelSetup &level_setup,
                      const PMultigridSettings &settings, MPI_Comm communicator);
     ~PMultigridSolver();
+
+    // Changes every level's operator (a new Newton state) and rebuilds what depends on it:
+    // diagonals, Chebyshev eigenvalue estimates, the degree-1 matrix and its solver. The mesh,
+    // DoFs, constraints and transfers stay.
+    void update(const std::function<void(Operator &)> &change);
 
     // Solves K u = f where u takes the prescribed values of 'constraints' (inhomogeneous).
     // condensed_rhs is C^T f with zero constrained rows (distribute_local_to_global of the cell
@@ -84,9 +98,13 @@ namespace compliant::fast_solver
     const PMultigridStatistics &statistics() const { return stats; }
 
   private:
+    void build_smoother_and_coarse_solver();
+
     struct Levels;
     std::unique_ptr<Levels> levels;
     PMultigridSettings      settings;
     PMultigridStatistics    stats;
+    MPI_Comm                communicator;
+    std::vector<dealii::PETScWrappers::MPI::Vector> coarse_rigid_body_modes;
   };
 } // namespace compliant::fast_solver

@@ -23,6 +23,14 @@
 #include <memory>
 #include <stdexcept>
 
+namespace compliant::fast_solver
+{
+  template <int dim, typename Operator>
+  class PMultigridSolver;
+  template <int dim, typename Number>
+  class TangentOperator;
+} // namespace compliant::fast_solver
+
 namespace compliant
 {
   struct FiniteStrainSettings
@@ -58,6 +66,7 @@ namespace compliant
 
     FiniteStrainProblem(const CaseParameters &parameters, const FiniteStrainSettings &settings,
                         const MeshedGeometry &geometry, MPI_Comm communicator);
+    ~FiniteStrainProblem();
 
     void setup();
 
@@ -92,6 +101,18 @@ namespace compliant
                                const dealii::PETScWrappers::MPI::Vector &v, double lambda,
                                double h) const;
 
+    // K v at the state u (Dirichlet DoFs held: identity rows), from the assembled tangent or the
+    // matrix-free operator of the fast solver; the two must agree to round-off.
+    dealii::PETScWrappers::MPI::Vector tangent_action(const dealii::PETScWrappers::MPI::Vector &u,
+                                                      const dealii::PETScWrappers::MPI::Vector &v,
+                                                      double lambda, bool matrix_free) const;
+
+    // Whether Newton steps use the matrix-free p-multigrid (Linear solver/Method auto or
+    // matrix-free, degree >= 2, displacement-only, no follower pressure), and why not.
+    bool        matrix_free_tangent() const;
+    static constexpr unsigned int auto_matrix_free_dofs = 20000; // 3D, Method = auto
+    std::string linear_solver_description() const;
+
     // f_int(u) - f_ext(u) without constraints: the support reactions.
     dealii::PETScWrappers::MPI::Vector reaction_forces() const;
     std::map<std::string, double>      expression_variables() const;
@@ -119,9 +140,13 @@ namespace compliant
     dealii::PETScWrappers::MPI::Vector solution; // ghosted, converged state
     unsigned int                       total_linear_solves = 0;
     double                             tangent_assembly_seconds = 0, linear_solve_seconds = 0;
+    // Of linear_solve_seconds: the matrix-free tangent's state on every level, diagonals,
+    // eigenvalue estimates and the degree-1 factorization, once per Newton step.
+    double                             preconditioner_setup_seconds = 0;
     // CG iterations over all Newton steps solved iteratively; set once CG failed (MUMPS after).
     unsigned int                       total_linear_iterations = 0;
     bool                               iterative_failed        = false;
+    std::string                        iterative_failure; // why the iterative solver was left
 
 
   private:
@@ -135,13 +160,28 @@ namespace compliant
     dealii::AffineConstraints<double> make_constraints(double lambda, bool homogeneous,
                                                        const dealii::PETScWrappers::MPI::Vector &u) const;
     // Assembles the residual f_int - lambda f_ext (and the tangent if asked) at state u.
+    // full_residual, if given, also gets it without the Dirichlet conditions (hanging nodes
+    // condensed): the internal force scale of the convergence test, from the same pass.
     // Throws StepFailure when an element inverts.
     void assemble(const dealii::PETScWrappers::MPI::Vector &u, double lambda,
                   const dealii::AffineConstraints<double> *constraints, bool with_matrix,
-                  dealii::PETScWrappers::MPI::Vector &residual) const;
+                  dealii::PETScWrappers::MPI::Vector &residual,
+                  dealii::PETScWrappers::MPI::Vector *full_residual = nullptr) const;
     double residual_norm(const dealii::PETScWrappers::MPI::Vector &u, double lambda,
                          const dealii::AffineConstraints<double> &homogeneous) const;
 
+    // One Newton correction by CG with the p-multigrid on the matrix-free tangent at state u
+    // (ghosted); rhs is C^T r. Returns the CG iterations; throws std::runtime_error on failure.
+    unsigned int solve_matrix_free(const dealii::PETScWrappers::MPI::Vector &u,
+                                   const dealii::PETScWrappers::MPI::Vector &rhs,
+                                   const dealii::AffineConstraints<double>  &constraints,
+                                   dealii::PETScWrappers::MPI::Vector       &du);
+    void add_level_constraints(const dealii::DoFHandler<dim>     &dofs,
+                               dealii::AffineConstraints<double> &constraints) const;
+
+    using TangentMultigrid =
+      fast_solver::PMultigridSolver<dim, fast_solver::TangentOperator<dim, double>>;
+    std::unique_ptr<TangentMultigrid>               tangent_multigrid; // built at the first step
     mutable dealii::PETScWrappers::MPI::SparseMatrix tangent;
     std::map<int, std::vector<std::string>>          follower_pressures; // per boundary id
     std::map<int, dealii::Tensor<1, dim>>            dead_tractions;

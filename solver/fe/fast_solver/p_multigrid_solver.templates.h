@@ -1,0 +1,214 @@
+// Implementation of PMultigridSolver, included by one translation unit per operator type.
+#pragma once
+
+#include "fast_solver/p_multigrid_solver.h"
+
+#include <deal.II/base/mg_level_object.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/multigrid/mg_coarse.h>
+#include <deal.II/multigrid/mg_matrix.h>
+#include <deal.II/multigrid/mg_smoother.h>
+#include <deal.II/multigrid/mg_transfer_global_coarsening.h>
+#include <deal.II/multigrid/multigrid.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "fast_solver/coarse_level_solver.h"
+#include "mesh/cell_aspect_ratio.h"
+#include "linear_algebra/rigid_body_modes.h"
+
+namespace compliant::fast_solver
+{
+  using namespace dealii;
+
+  template <int dim, typename Operator_>
+  struct PMultigridSolver<dim, Operator_>::Levels
+  {
+    using VectorType     = LinearAlgebra::distributed::Vector<double>;
+    using Operator       = Operator_;
+    using SmootherType   = PreconditionChebyshev<Operator, VectorType, DiagonalMatrix<VectorType>>;
+    using TransferType   = MGTransferGlobalCoarsening<dim, VectorType>;
+
+    // Level l holds degree l + 1; the finest is the problem's own DoFHandler.
+    std::vector<std::unique_ptr<FESystem<dim>>>    coarse_elements;
+    std::vector<std::unique_ptr<DoFHandler<dim>>>  coarse_dofs;
+    MGLevelObject<const DoFHandler<dim> *>         dofs;
+    MGLevelObject<AffineConstraints<double>>       constraints;
+    MGLevelObject<std::unique_ptr<Operator>>       operators;
+    MGLevelObject<MGTwoLevelTransfer<dim, VectorType>> two_level_transfers;
+    std::unique_ptr<TransferType>                  transfer;
+    PETScWrappers::MPI::SparseMatrix               coarse_matrix;
+    std::unique_ptr<CoarseLevelSolver>               coarse_solver;
+    MGSmootherPrecondition<Operator, SmootherType, VectorType> smoother;
+  };
+
+  template <int dim, typename Operator>
+  PMultigridSolver<dim, Operator>::PMultigridSolver(const Mapping<dim>       &mapping,
+                                                    const DoFHandler<dim>    &fine_dofs,
+                                                    const LevelConstraints   &level_constraints,
+                                                    const LevelSetup         &level_setup,
+                                                    const PMultigridSettings &settings_in,
+                                                    MPI_Comm                  communicator_in)
+    : levels(std::make_unique<Levels>())
+    , settings(settings_in)
+    , communicator(communicator_in)
+  {
+    Timer              timer;
+    const unsigned int fine_degree = fine_dofs.get_fe().degree;
+    const unsigned int top         = fine_degree - 1;
+    auto              &L           = *levels;
+    L.dofs.resize(0, top);
+    L.constraints.resize(0, top);
+    L.operators.resize(0, top);
+    L.two_level_transfers.resize(0, top);
+
+    for (unsigned int level = 0; level <= top; ++level)
+      {
+        if (level == top)
+          L.dofs[level] = &fine_dofs;
+        else
+          {
+            L.coarse_elements.push_back(std::make_unique<FESystem<dim>>(FE_Q<dim>(level + 1), dim));
+            L.coarse_dofs.push_back(std::make_unique<DoFHandler<dim>>(fine_dofs.get_triangulation()));
+            L.coarse_dofs.back()->distribute_dofs(*L.coarse_elements.back());
+            L.dofs[level] = L.coarse_dofs.back().get();
+          }
+        IndexSet relevant;
+        DoFTools::extract_locally_relevant_dofs(*L.dofs[level], relevant);
+        L.constraints[level].reinit(relevant);
+        level_constraints(*L.dofs[level], L.constraints[level]);
+        L.constraints[level].close();
+        L.operators[level] = std::make_unique<typename Levels::Operator>();
+        level_setup(*L.operators[level], mapping, *L.dofs[level], L.constraints[level]);
+        stats.level_dofs.push_back(L.dofs[level]->n_dofs());
+      }
+
+    for (unsigned int level = 1; level <= top; ++level)
+      L.two_level_transfers[level].reinit_polynomial_transfer(*L.dofs[level], *L.dofs[level - 1],
+                                                              L.constraints[level],
+                                                              L.constraints[level - 1]);
+    L.transfer = std::make_unique<typename Levels::TransferType>(
+      L.two_level_transfers, [&L](const unsigned int level, typename Levels::VectorType &vector) {
+        L.operators[level]->initialize_dof_vector(vector);
+      });
+
+    stats.largest_aspect_ratio = largest_cell_aspect_ratio(fine_dofs.get_triangulation(), communicator);
+    const double a             = stats.largest_aspect_ratio;
+    stats.smoothing_range      = settings.smoothing_range > 0 ? settings.smoothing_range :
+                                                                std::clamp(3 * a * a, 20.0, 400.0);
+    stats.smoothing_degree     = settings.smoothing_degree > 0 ?
+                                   settings.smoothing_degree :
+                                   std::clamp<unsigned int>(std::lround(std::sqrt(stats.smoothing_range)) - 1, 4, 16);
+    stats.coarse_direct        = settings.coarse == PMultigridSettings::Coarse::direct ||
+                          (settings.coarse == PMultigridSettings::Coarse::automatic && a > 3 &&
+                           L.dofs[0]->n_dofs() <= settings.direct_coarse_limit);
+
+    coarse_rigid_body_modes = rigid_body_modes(mapping, *L.dofs[0], communicator);
+    build_smoother_and_coarse_solver();
+    stats.setup_seconds = timer.wall_time();
+  }
+
+  template <int dim, typename Operator>
+  void PMultigridSolver<dim, Operator>::build_smoother_and_coarse_solver()
+  {
+    auto              &L   = *levels;
+    const unsigned int top = L.operators.max_level();
+    MGLevelObject<typename Levels::SmootherType::AdditionalData> smoother_data(0, top);
+    for (unsigned int level = 0; level <= top; ++level)
+      {
+        auto &data          = smoother_data[level];
+        data.preconditioner = std::make_shared<DiagonalMatrix<typename Levels::VectorType>>();
+        L.operators[level]->compute_inverse_diagonal(data.preconditioner->get_vector());
+        data.degree              = stats.smoothing_degree;
+        data.smoothing_range     = stats.smoothing_range;
+        data.eig_cg_n_iterations = 15;
+        data.constraints.copy_from(L.constraints[level]);
+      }
+    L.smoother.initialize(L.operators, smoother_data);
+
+    L.coarse_solver.reset(); // it refers to the matrix rebuilt here
+    L.operators[0]->compute_matrix(L.coarse_matrix, communicator);
+    L.coarse_solver = std::make_unique<CoarseLevelSolver>(
+      L.coarse_matrix, coarse_rigid_body_modes, dim,
+      stats.coarse_direct, settings.coarse_tolerance, settings.petsc_options);
+  }
+
+  template <int dim, typename Operator>
+  void PMultigridSolver<dim, Operator>::update(const std::function<void(Operator &)> &change)
+  {
+    Timer timer;
+    auto &L = *levels;
+    for (unsigned int level = L.operators.min_level(); level <= L.operators.max_level(); ++level)
+      change(*L.operators[level]);
+    build_smoother_and_coarse_solver();
+    stats.setup_seconds += timer.wall_time();
+  }
+
+  template <int dim, typename Operator>
+  PMultigridSolver<dim, Operator>::~PMultigridSolver() = default;
+
+  template <int dim, typename Operator>
+  unsigned int PMultigridSolver<dim, Operator>::solve(const PETScWrappers::MPI::Vector &condensed_rhs,
+                                            const AffineConstraints<double>  &constraints,
+                                            PETScWrappers::MPI::Vector        &solution)
+  {
+    using VectorType        = typename Levels::VectorType;
+    auto              &L    = *levels;
+    const unsigned int top  = L.operators.max_level();
+    const auto        &fine = *L.operators[top];
+
+    // The prescribed values as a conforming field (hanging nodes follow their masters); its
+    // action moves to the right-hand side, and CG solves for the correction, zero where prescribed.
+    VectorType lifting, rhs, correction, product;
+    fine.initialize_dof_vector(lifting);
+    fine.initialize_dof_vector(rhs);
+    fine.initialize_dof_vector(correction);
+    fine.initialize_dof_vector(product);
+    constraints.distribute(lifting);
+    lifting.update_ghost_values();
+    fine.apply_to_lifting(product, lifting);
+    const unsigned int n_owned = rhs.locally_owned_size();
+    {
+      const PetscScalar *values;
+      VecGetArrayRead(condensed_rhs, &values);
+      for (unsigned int i = 0; i < n_owned; ++i)
+        rhs.local_element(i) = values[i] - product.local_element(i);
+      VecRestoreArrayRead(condensed_rhs, &values);
+    }
+    constraints.set_zero(rhs);
+    stats.lifted_rhs_norm = rhs.l2_norm();
+
+    mg::Matrix<VectorType> mg_matrix(L.operators);
+    Multigrid<VectorType>  multigrid(mg_matrix, *L.coarse_solver, *L.transfer, L.smoother,
+                                     L.smoother, 0, top);
+    PreconditionMG<dim, VectorType, typename Levels::TransferType> preconditioner(*L.dofs[top],
+                                                                                 multigrid,
+                                                                                 *L.transfer);
+    SolverControl        control(settings.max_iterations,
+                          settings.relative_tolerance * rhs.l2_norm(), false, false);
+    if (settings.coarse_tolerance > 0 && !stats.coarse_direct)
+      SolverFlexibleCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);
+    else
+      SolverCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);
+    stats.coarse_iterations = L.coarse_solver->inner_iterations();
+
+    PetscScalar *values;
+    VecGetArray(solution, &values);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      values[i] = correction.local_element(i);
+    VecRestoreArray(solution, &values);
+    stats.iterations = control.last_step();
+    return stats.iterations;
+  }
+
+} // namespace compliant::fast_solver
+
