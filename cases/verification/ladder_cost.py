@@ -13,7 +13,8 @@ References: exact (2D cantilever, Timoshenko-Goodier), Saint-Venant series (tors
 converged values from uniform Q2 Richardson where no closed form is exact: Cook's membrane 23.9677
 (to 132k DoFs; the literature's 23.96 agrees to its 4 digits); the slender flexure hinge of
 cases/flexure_hinge.prm 3.4341 N mm/rad (3.4455, 3.4394, 3.4365 at 73k, 290k, 1.15M DoFs, observed
-order 1.1 from the notch corners: extrapolated 3.4341 +- 0.0005).
+order 1.1 from the notch corners: extrapolated 3.4341 +- 0.0005); the elastica tip deflection of
+cases/verification/elastica_tip_load.prm from 10 x 1 cells, 30.174142 (5 refinements, 83k DoFs).
 """
 import argparse
 import csv
@@ -43,6 +44,10 @@ PROBLEMS = [
      [], []),
     ("torsion bar J, 3D Q2 (Saint-Venant series)", "torsion_bar.prm", "J", None,
      ["Geometry/Parameters/nx=30", "Geometry/Parameters/ny=6", "Geometry/Parameters/nz=1"], []),
+    # Finite strain: the ladder starts linear (Analysis=linear static), the sweep runs the case's
+    # own nonlinear analysis. Reference: the converged continuum (5 refinements, 83k DoFs).
+    ("elastica tip deflection, finite strain 2D Q2 (converged)", "elastica_tip_load.prm", "displacement_tip_y",
+     30.174142, ["Geometry/Parameters/nx=10", "Geometry/Parameters/ny=1"], ["Analysis=linear static"]),
 ]
 
 

@@ -61,9 +61,11 @@ namespace compliant
       prm.leave_subsection();
     }
 
-    template <int dim>
-    int run(const RunContext &context)
-    {
+  } // namespace
+
+  template <int dim>
+  int run_nonlinear_static(const RunContext &context, const std::function<void(RunSummary &)> &amend_summary)
+  {
       const auto &p    = context.parameters;
       MPI_Comm    comm = context.communicator;
       const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
@@ -247,6 +249,8 @@ namespace compliant
       if (problem.total_linear_iterations > 0)
         summary.quantities["linear_iterations"] = problem.total_linear_iterations;
       summary.quantities["time_total"]        = timer.wall_time();
+      if (amend_summary)
+        amend_summary(summary);
       finish_run(context, summary, problem.expression_variables(),
                  [&](const std::string &directory) { write_fields(problem, directory); });
       if (!failure.empty())
@@ -257,8 +261,10 @@ namespace compliant
           return 3;
         }
       return 0;
-    }
-  } // namespace
+  }
+
+  template int run_nonlinear_static<2>(const RunContext &, const std::function<void(RunSummary &)> &);
+  template int run_nonlinear_static<3>(const RunContext &, const std::function<void(RunSummary &)> &);
 
   Analysis nonlinear_static_analysis()
   {
@@ -267,7 +273,8 @@ namespace compliant
             "subsection Finite strain)",
             declare,
             [](const RunContext &context) {
-              return context.parameters.dimension == 2 ? run<2>(context) : run<3>(context);
+              return context.parameters.dimension == 2 ? run_nonlinear_static<2>(context) :
+                                                         run_nonlinear_static<3>(context);
             }};
   }
 } // namespace compliant

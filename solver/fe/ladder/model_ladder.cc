@@ -5,12 +5,14 @@
 #include <deal.II/fe/fe_values.h>
 
 #include "analyses/linear_static_model.h"
+#include "analyses/nonlinear_static.h"
 #include "input/spec_list.h"
 #include "quantities/comparison.h"
 #include "ladder/adaptive_refinement.h"
 #include "ladder/error_estimate.h"
 #include "mesh/memory_estimate.h"
 #include "output/field_output.h"
+#include "output/summary.h"
 
 #include <algorithm>
 #include <cmath>
@@ -127,6 +129,7 @@ namespace compliant
     dealii::Timer total;
     struct Rung
     {
+      std::string  model = "linear";
       unsigned int refinements, adaptive_cycles;
       double       dofs, seconds;
       std::map<std::string, double>        values;
@@ -252,13 +255,20 @@ namespace compliant
             if (finite_strain && !target.allow_finite_strain)
               geometric_reason += ": finite strain would be needed, but Target/Allow finite strain = false keeps it linear";
             else
-              geometric_reason += finite_strain ? ": finite strain needed (discretization still chosen on linear rungs)" :
+              geometric_reason += finite_strain ? ": finite strain needed (its own rungs follow)" :
                                                   ": linear is enough";
             finite_strain = finite_strain && target.allow_finite_strain;
             if (root)
               std::cout << "  (c) " << geometric_reason << "\n";
           }
-        if (met)
+        if (finite_strain)
+          {
+            // The linear answer is off by its geometric error whatever the mesh: climb in
+            // finite strain instead, from the case's own mesh.
+            met           = false;
+            rung.decision = "finite strain needed: the climb goes on in finite strain";
+          }
+        else if (met)
           rung.decision = "estimate meets the target: stop";
         else if (k == target.max_refinements)
           rung.decision = "target NOT met within Target/Maximum refinements";
@@ -297,6 +307,8 @@ namespace compliant
         rungs.push_back(rung);
         chosen_parameters = std::move(rung_parameters);
         chosen            = std::move(model);
+        if (finite_strain)
+          break;
       }
 
     // The chosen model's run: linear output as usual, or the finite-strain analysis on its mesh.
@@ -315,7 +327,7 @@ namespace compliant
       for (std::size_t k = 0; k < rungs.size(); ++k)
         {
           cumulative += rungs[k].seconds;
-          out << k + 1 << ",linear," << p.element_degree << ',' << rungs[k].refinements << ','
+          out << k + 1 << ',' << rungs[k].model << ',' << p.element_degree << ',' << rungs[k].refinements << ','
               << rungs[k].adaptive_cycles << ',' << rungs[k].dofs << ',' << rungs[k].seconds << ',' << cumulative;
           for (const auto &n : names)
             {
@@ -331,18 +343,114 @@ namespace compliant
     };
     if (finite_strain)
       {
-        if (root)
-          std::cout << "  (c) finite strain on the chosen mesh (" << chosen_parameters->global_refinements
-                    << " refinements, " << chosen_parameters->adaptive_refinements.size()
-                    << " adaptive)" << std::endl;
+        // (d) in finite strain: uniform refinement from the case's own mesh (adaptive
+        // refinement drives linear rungs only) until the estimate meets the target. Every rung
+        // writes the output directory; what stays is the last rung's, with its estimates.
         chosen.problem.reset();
-        CaseParameters nonlinear = *chosen_parameters;
-        nonlinear.analysis       = "nonlinear static";
-        RunContext nonlinear_context{nonlinear, context.prm, context.geometry, context.check_only,
-                                     context.communicator};
-        const int rc = find_analysis("nonlinear static").run(nonlinear_context);
-        write_ladder(nonlinear.output_directory);
-        return rc;
+        const unsigned int first = p.global_refinements;
+        const unsigned int last  = p.global_refinements + target.max_refinements;
+        std::map<std::string, std::vector<double>> fs_history;
+        std::vector<double>                        fs_sizes;
+        bool                                       fs_met = false;
+        double                                     last_fs_cells = 0;
+        for (unsigned int r = first; r <= last && !fs_met; ++r)
+          {
+            if (r > first)
+              try
+                {
+                  refuse_refinement_beyond_memory(static_cast<std::uint64_t>(last_fs_cells), dim, 1,
+                                                  p.element_degree,
+                                                  dealii::Utilities::MPI::n_mpi_processes(context.communicator));
+                }
+              catch (const ModelTooLarge &e)
+                {
+                  too_large = e.what();
+                  rungs.back().decision = "target NOT met: the next rung would not fit in memory";
+                  if (root)
+                    std::cout << "  (d) no finite-strain rung at " << r << " refinements: " << too_large << std::endl;
+                  break;
+                }
+            CaseParameters nonlinear     = *chosen_parameters;
+            nonlinear.analysis           = "nonlinear static";
+            nonlinear.global_refinements = r;
+            RunContext nonlinear_context{nonlinear, context.prm, context.geometry, context.check_only,
+                                         context.communicator};
+            Rung          rung;
+            rung.model           = "finite strain";
+            rung.refinements     = r;
+            rung.adaptive_cycles = 0;
+            dealii::Timer rung_timer;
+            const auto amend = [&](RunSummary &summary) {
+              rung.dofs     = summary.quantities.at("n_dofs");
+              last_fs_cells = summary.quantities.at("n_cells");
+              fs_sizes.push_back(std::ldexp(1.0, -static_cast<int>(r - first)));
+              fs_met = true;
+              for (const auto &n : names)
+                {
+                  const auto found = summary.quantities.find(n);
+                  if (found == summary.quantities.end())
+                    throw InputError("case file '" + p.case_file + "', Target/Quantities: '" + n +
+                                     "' is not a reported quantity of the finite-strain analysis");
+                  fs_history[n].push_back(found->second);
+                  const auto e = estimate_discretization_error(fs_history[n], fs_sizes, p.element_degree + 1.0);
+                  rung.values[n]    = found->second;
+                  rung.estimates[n] = e;
+                  fs_met = fs_met && e.available && e.order_observed && e.relative <= target.relative_error;
+                  if (e.available)
+                    {
+                      summary.quantities[n + "_error_estimate"] = e.relative;
+                      summary.quantities[n + "_observed_order"] = e.observed_order;
+                    }
+                  else
+                    summary.settings.insert({n + "_error_estimate", e.note});
+                }
+              summary.settings.insert({"ladder", fs_met ? "target met" : "target not met"});
+              summary.settings.insert({"ladder_geometric_check", geometric_reason});
+              summary.quantities["ladder_rungs"]          = rungs.size() + 1;
+              summary.quantities["ladder_total_seconds"]  = total.wall_time();
+              summary.quantities["target_relative_error"] = target.relative_error;
+            };
+            const int rc = run_nonlinear_static<dim>(nonlinear_context, amend);
+            rung.seconds = rung_timer.wall_time();
+            if (rc != 0)
+              {
+                if (!rung.values.empty())
+                  rungs.push_back(rung);
+                write_ladder(nonlinear.output_directory);
+                return rc;
+              }
+            if (fs_met)
+              rung.decision = "estimate meets the target: stop";
+            else if (r == last)
+              rung.decision = "target NOT met within Target/Maximum refinements";
+            else
+              {
+                rung.decision = "refine:";
+                for (const auto &[n, e] : rung.estimates)
+                  if (!e.available)
+                    rung.decision += " " + n + " " + e.note + ";";
+                  else if (!e.order_observed)
+                    rung.decision += " " + n + " " + e.note + ", one more rung to observe it;";
+                  else if (e.relative > target.relative_error)
+                    rung.decision += " " + n + " estimate " + percent(e.relative) + " > target;";
+              }
+            if (root)
+              {
+                std::cout << "  (d) rung " << rungs.size() + 1 << ": finite strain, degree " << p.element_degree
+                          << ", refinements " << r << ", " << static_cast<long>(rung.dofs) << " DoFs, "
+                          << std::setprecision(3) << rung.seconds << " s;";
+                for (const auto &[n, v] : rung.values)
+                  {
+                    const auto &e = rung.estimates[n];
+                    std::cout << ' ' << n << " = " << std::setprecision(8) << v << " (estimate "
+                              << (e.available ? percent(e.relative) : std::string("-")) << ")";
+                  }
+                std::cout << "; " << rung.decision << std::endl;
+              }
+            rungs.push_back(rung);
+          }
+        write_ladder(chosen_parameters->output_directory);
+        return fs_met ? 0 : 4;
       }
 
     const auto &problem = *chosen.problem;
