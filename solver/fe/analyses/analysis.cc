@@ -35,6 +35,16 @@ namespace compliant
             else if (access(existing.c_str(), W_OK | X_OK) != 0)
               error = "'" + existing.string() + "' is not writable, so '" + p.output_directory +
                       "' cannot be written";
+            else
+              {
+                // access() says yes to root everywhere (even /proc): try to create a directory.
+                const fs::path probe =
+                  existing / (".compliant-probe-" + std::to_string(getpid()));
+                if (!fs::create_directory(probe, ec) || ec)
+                  error = "no directory can be created in '" + existing.string() + "' (" +
+                          ec.message() + "), so '" + p.output_directory + "' cannot be written";
+                fs::remove(probe, ec);
+              }
           }
       }
     error = dealii::Utilities::MPI::broadcast(communicator, error, 0);

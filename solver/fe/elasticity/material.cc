@@ -115,6 +115,11 @@ namespace compliant
                                       "' needs E > 0 and -1 < nu < 0.5 (got E=" +
                                       std::to_string(m.youngs_modulus) +
                                       ", nu=" + std::to_string(m.poissons_ratio) + ")");
+        if (!(m.density >= 0) || !(m.yield_strength >= 0))
+          throw std::invalid_argument(where + ": '" + item.name +
+                                      "' needs density >= 0 and yield >= 0 (got density=" +
+                                      std::to_string(m.density) + ", yield=" +
+                                      std::to_string(m.yield_strength) + ")");
         by_body[item.name] = m;
       }
 

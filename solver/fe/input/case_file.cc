@@ -4,6 +4,7 @@
 #include "input/spec_list.h"
 
 #include <fstream>
+#include <cmath>
 #include <sstream>
 
 #ifndef COMPLIANT_SOURCE_DIR
@@ -225,6 +226,8 @@ namespace compliant
 
   namespace
   {
+    std::string describe_parameter_error(const std::string &what, const std::string &path);
+
     // Applies "A/B/Name=value" to the handler; names the override on failure.
     void apply_override(ParameterHandler &prm, const std::string &text, bool ignore_undeclared)
     {
@@ -252,8 +255,7 @@ namespace compliant
             prm.leave_subsection();
           if (ignore_undeclared)
             return;
-          throw InputError("--set \"" + text + "\": no such parameter, or value not allowed (" +
-                           trim(e.what()).substr(0, 400) + ")");
+          throw InputError("--set \"" + text + "\": " + describe_parameter_error(e.what(), path));
         }
       for (; depth > 0; --depth)
         prm.leave_subsection();
@@ -267,7 +269,37 @@ namespace compliant
       const auto  end = out.find("Stacktrace:");
       if (end != std::string::npos)
         out = out.substr(0, end);
-      return trim(out);
+      // one line: the banner wraps its text
+      std::string flat;
+      for (const char c : trim(out))
+        if (c == '\n' || c == '\t' || c == ' ')
+          {
+            if (!flat.empty() && flat.back() != ' ')
+              flat += ' ';
+          }
+        else
+          flat += c;
+      return flat;
+    }
+
+    // A ParameterHandler failure on "Section/Name" in words: which value is not allowed and what
+    // the pattern expects, or that no such parameter exists.
+    std::string describe_parameter_error(const std::string &what, const std::string &path)
+    {
+      const std::string detail = first_lines(what);
+      const std::string marker = "The string <", middle = "> does not match the given pattern <";
+      const auto        a = detail.find(marker), b = detail.find(middle);
+      if (a != std::string::npos && b != std::string::npos && b > a)
+        {
+          std::string pattern = detail.substr(b + middle.size());
+          pattern             = pattern.substr(0, pattern.rfind('>'));
+          if (!pattern.empty() && pattern.front() == '[')
+            pattern = pattern.substr(1, pattern.rfind(']') - 1);
+          return "value '" + detail.substr(a + marker.size(), b - a - marker.size()) +
+                 "' is not allowed for " + path + "; expected " + pattern;
+        }
+      return "no parameter '" + path + "' (" + detail +
+             "); give the full \"Section/Name=value\" as --help lists it";
     }
 
     void parse_file(ParameterHandler &prm, const std::string &file, bool skip_undefined)
@@ -276,7 +308,17 @@ namespace compliant
         throw InputError("case file '" + file + "' cannot be opened");
       try
         {
-          prm.parse_input(file, "", skip_undefined, true);
+          // Read as text: a UTF-8 byte-order mark (editors on Windows write one) is dropped,
+          // CRLF line endings are fine as they are.
+          std::ifstream     in(file, std::ios::binary);
+          std::stringstream content;
+          content << in.rdbuf();
+          std::string text = content.str();
+          if (text.rfind("\xEF\xBB\xBF", 0) == 0)
+            text.erase(0, 3);
+          std::istringstream stream(text);
+          prm.parse_input(stream, file, "", skip_undefined);
+          prm.assert_that_entries_have_been_set();
         }
       catch (const std::exception &e)
         {
@@ -350,6 +392,10 @@ namespace compliant
 
     prm.enter_subsection("Material");
     p.thickness   = prm.get_double("Thickness");
+    if (!(p.thickness > 0) || !std::isfinite(p.thickness))
+      throw InputError("case file '" + p.case_file + "', Material/Thickness: expected a positive "
+                       "number (the out-of-plane thickness of a 2D model), got " +
+                       prm.get("Thickness"));
     p.unit_system = prm.get("Unit system");
     p.materials   = prm.get("Materials");
     prm.leave_subsection();

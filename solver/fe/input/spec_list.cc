@@ -1,6 +1,7 @@
 #include "input/spec_list.h"
 
 #include <iomanip>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -130,6 +131,8 @@ namespace compliant
           }
         if (used != token.size())
           throw std::invalid_argument(where + ": expected a number, got '" + token + "'");
+        if (!std::isfinite(v))
+          throw std::invalid_argument(where + ": expected a finite number, got '" + token + "'");
         values.push_back(v);
       }
     return values;

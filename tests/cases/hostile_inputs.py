@@ -1,0 +1,183 @@
+#!/usr/bin/python3
+"""A corpus of hostile inputs (issue 15): every run on 2 ranks under a timeout must end with the
+expected exit code, one message that names the file/parameter and what was expected (each entry
+lists words the message must hold), no stack dump or abort, no hang, and no output directory left
+behind when it fails. Inputs that are unusual but valid (CRLF line endings, a UTF-8 BOM) must work.
+
+    hostile_inputs.py            # the whole corpus; prints one line per input and a count by outcome
+"""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.normpath(os.path.join(here, "..", ".."))
+build = os.environ.get("COMPLIANT_BUILD", os.path.join(root, "build"))
+solver = os.environ.get("COMPLIANT_SOLVER", os.path.join(build, "solver", "fe", "compliant"))
+tools = {"fatigue_life": os.path.join(build, "solver", "fatigue", "fatigue_life"),
+         "jansen_kinematics": os.path.join(build, "solver", "mechanisms", "jansen", "jansen_kinematics"),
+         "flap_prbm": os.path.join(build, "solver", "mechanisms", "four_bar", "flap_prbm")}
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+hinge = os.path.join(root, "cases", "flexure_hinge.prm")
+cantilever_3d = os.path.join(root, "cases", "verification", "cantilever_3d.prm")
+modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
+scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
+outcomes = {}
+failed = []
+DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
+              "An error occurred in line", "MPI_ABORT was invoked")
+
+
+def scratch_file(name, content, mode="w"):
+    path = os.path.join(scratch, name)
+    with open(path, mode) as f:
+        f.write(content)
+    return path
+
+
+def record(name, ok, detail):
+    outcomes.setdefault("passed" if ok else "FAILED", []).append(name)
+    print(("PASS  " if ok else "FAIL  ") + name + ": " + detail)
+    if not ok:
+        failed.append(name)
+
+
+def solver_case(name, args, words, code=2, np=2, timeout=120):
+    """The solver on a case with --set overrides; fails with `code` and a message holding `words`."""
+    given = [a.split("=", 1)[1] for a in args if a.startswith("Output/Directory=")]
+    out = given[0] if given else os.path.join(scratch, "out-" + str(len(outcomes.get("passed", [])) + len(failed)))
+    cmd = ["mpirun", "-np", str(np), solver] + args + ([] if given else ["--set", "Output/Directory=" + out])
+    start = time.time()
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, env=env)
+    except subprocess.TimeoutExpired:
+        record(name, False, "hung (no exit within %d s)" % timeout)
+        return
+    text = p.stdout + p.stderr
+    missing = [w for w in words if w.lower() not in text.lower()]
+    dumped = [d for d in DUMP_SIGNS if d in text]
+    left = os.path.exists(out) and code != 0
+    ok = p.returncode == code and not missing and not dumped and not left
+    detail = "exit %d (want %d) in %.1f s" % (p.returncode, code, time.time() - start)
+    if missing:
+        detail += ", message lacks %s" % missing
+    if dumped:
+        detail += ", dump: %s" % dumped
+    if left:
+        detail += ", output directory left behind"
+    if not ok:
+        detail += "\n      " + "\n      ".join(p.stderr.strip().splitlines()[-6:])
+    record(name, ok, detail)
+
+
+def tool(name, program, args, words, code=2):
+    try:
+        p = subprocess.run([tools[program]] + args, capture_output=True, text=True, timeout=60)
+    except subprocess.TimeoutExpired:
+        record(name, False, "hung")
+        return
+    text = p.stdout + p.stderr
+    missing = [w for w in words if w.lower() not in text.lower()]
+    dumped = [d for d in DUMP_SIGNS if d in text]
+    ok = p.returncode == code and not missing and not dumped
+    detail = "exit %d (want %d)" % (p.returncode, code)
+    if missing:
+        detail += ", message lacks %s: %s" % (missing, p.stderr.strip()[-300:])
+    record(name, ok, detail)
+
+
+with open(hinge) as f:
+    base = f.read()
+S = "--set"
+
+# --- the case file itself -------------------------------------------------------------------
+solver_case("empty case file", [scratch_file("empty.prm", "")], ["empty.prm"])
+solver_case("binary garbage", [scratch_file("garbage.prm", bytes(range(256)) * 8, "wb")], ["garbage.prm"])
+solver_case("misspelled section", [scratch_file("section.prm", base.replace("subsection Material", "subsection Materal"))],
+            ["section.prm", "Materal"])
+solver_case("misspelled parameter", [scratch_file("param.prm", base.replace("set Clamped = base", "set Clampd = base"))],
+            ["param.prm", "Clampd"])
+solver_case("unterminated subsection", [scratch_file("open.prm", base + "\nsubsection Loads\n")], ["open.prm"])
+solver_case("CRLF line endings work", [scratch_file("crlf.prm", base.replace("\n", "\r\n")), "--check"], [], code=0)
+solver_case("UTF-8 BOM works", [scratch_file("bom.prm", "\ufeff" + base), "--check"], [], code=0)
+solver_case("missing case file", [os.path.join(scratch, "absent.prm")], ["absent.prm"])
+solver_case("directory as case file", [scratch], [scratch])
+solver_case("--set without its section", [hinge, S, "Materials=*: steel"], ["Materials"])
+solver_case("--set without a value", [hinge, S, "Analysis"], ["Analysis"])
+
+# --- enums and numbers ------------------------------------------------------------------------
+solver_case("unknown analysis", [hinge, S, "Analysis=dynamic"], ["Analysis", "dynamic"])
+solver_case("unknown model", [hinge, S, "Model=4d"], ["Model", "4d"])
+solver_case("unknown solver method", [hinge, S, "Linear solver/Method=magic"], ["Method", "magic"])
+solver_case("element degree 0", [hinge, S, "Discretization/Element degree=0"], ["Element degree"])
+solver_case("element degree 7", [hinge, S, "Discretization/Element degree=7"], ["Element degree"])
+solver_case("negative refinements", [hinge, S, "Discretization/Global refinements=-1"], ["Global refinements"])
+solver_case("refinement beyond the allowed range", [hinge, S, "Discretization/Global refinements=9"], ["Global refinements", "0...8"])
+solver_case("refinement beyond memory", [hinge, S, "Discretization/Global refinements=8", S, "Geometry/Parameters/nt=8"],
+            ["Global refinements", "GB"])
+solver_case("E = 0", [hinge, S, "Material/Materials=*: steel, E=0"], ["E"])
+solver_case("E < 0", [hinge, S, "Material/Materials=*: steel, E=-200e3"], ["E"])
+solver_case("E = nan", [hinge, S, "Material/Materials=*: steel, E=nan"], ["E"])
+solver_case("E = inf", [hinge, S, "Material/Materials=*: steel, E=inf"], ["E"])
+solver_case("nu = 0.5", [hinge, S, "Material/Materials=*: steel, nu=0.5"], ["nu"])
+solver_case("nu = -1.5", [hinge, S, "Material/Materials=*: steel, nu=-1.5"], ["nu"])
+solver_case("negative density", [hinge, S, "Material/Materials=*: steel, density=-1"], ["density"])
+solver_case("thickness 0", [hinge, S, "Material/Thickness=0"], ["Thickness"])
+solver_case("geometry parameter nan", [hinge, S, "Geometry/Parameters/t=nan"], ["t"])
+solver_case("geometry parameter negative", [hinge, S, "Geometry/Parameters/t=-1"], ["must be positive"])
+solver_case("geometry gmsh cannot build", [hinge, S, "Geometry/Parameters/l=0"], ["flexure_hinge_2d.geo", "gmsh"])
+solver_case("rotation angle nan", [hinge, S, "Boundary conditions/Rotation=drive: degrees=nan, center=l/2 0"], ["Rotation"])
+solver_case("traction inf", [hinge, S, "Loads/Traction=drive: 0 inf"], ["Traction"])
+solver_case("traction syntax error", [hinge, S, "Loads/Traction=drive: 0 -1/(x-"], ["Traction"])
+solver_case("traction NaN expression", [hinge, S, "Loads/Traction=drive: 0 1/(x-x)"], ["Traction", "not finite"])
+solver_case("traction with one component", [hinge, S, "Loads/Traction=drive: 1"], ["Traction"])
+solver_case("point with nan coordinate", [hinge, S, "Quantities/Points=p: nan 0"], ["p"])
+solver_case("point outside the mesh", [hinge, S, "Quantities/Points=far: 1000 0"], ["far", "outside"])
+solver_case("target error negative", [hinge, S, "Target/Relative error=-1"], ["Relative error"])
+solver_case("modal: 0 modes", [modal, S, "Modal/Number of modes=0"], ["modes"])
+solver_case("modal: -3 modes", [modal, S, "Modal/Number of modes=-3"], ["modes"])
+solver_case("negative load step", [hinge, S, "Analysis=nonlinear static", S, "Finite strain/Initial step=-0.1"],
+            ["Initial step"])
+
+# --- names, meshes, supports -------------------------------------------------------------------
+solver_case("missing mesh file", [hinge, S, "Geometry/Mesh file=nothing.geo"], ["nothing.geo"])
+solver_case("unknown boundary name", [hinge, S, "Boundary conditions/Clamped=bse"], ["bse"])
+solver_case("empty boundary name", [hinge, S, "Boundary conditions/Clamped=:"], ["Clamped"])
+solver_case("unknown body name", [hinge, S, "Material/Materials=bdy: steel"], ["bdy"])
+solver_case("unknown material", [hinge, S, "Material/Materials=*: unobtainium"], ["unobtainium"])
+plain_geo = scratch_file("plain.geo", "Point(1)={0,0,0,0.5}; Point(2)={1,0,0,0.5}; Point(3)={1,1,0,0.5};"
+                         " Point(4)={0,1,0,0.5}; Line(1)={1,2}; Line(2)={2,3}; Line(3)={3,4}; Line(4)={4,1};"
+                         " Curve Loop(1)={1,2,3,4}; Plane Surface(1)={1};\n")
+plain_case = scratch_file("plain.prm", "set Model = plane stress\nsubsection Geometry\n  set Mesh file = plain.geo\nend\n"
+                          "subsection Material\n  set Materials = *: steel\nend\n"
+                          "subsection Boundary conditions\n  set Clamped = left\nend\n")
+solver_case("mesh without physical groups", [plain_case], ["plain.geo", "physical"])
+bad_geo = scratch_file("broken.geo", "Point(1) = {0, 0, 0;\nLine(1) = {1, 7};\n")
+solver_case("a .geo gmsh cannot read", [plain_case, S, "Geometry/Mesh file=" + bad_geo], ["broken.geo"])
+solver_case("no supports (singular)", [cantilever_3d, S, "Boundary conditions/Clamped="], ["Boundary conditions", "constrained"])
+solver_case("unwritable output directory", [hinge, S, "Output/Directory=/proc/compliant"], ["Output/Directory"])
+solver_case("one cell on more ranks than cells", [cantilever_3d, S, "Geometry/Parameters/nx=1",
+            S, "Geometry/Parameters/ny=1", S, "Geometry/Parameters/nz=1", "--check"], [], code=0, np=3)
+
+# --- the standalone tools ----------------------------------------------------------------------
+# The standalone tools exit 1 on bad input (their own convention), with the same kind of message.
+tool("fatigue_life: empty CSV", "fatigue_life", [scratch_file("empty.csv", "")], ["empty.csv", "header"], code=1)
+tool("fatigue_life: malformed CSV", "fatigue_life", [scratch_file("bad.csv", "time,a\n0,0.01\n1,abc\n")],
+     ["bad.csv", "line 3", "abc"], code=1)
+tool("fatigue_life: NaN amplitude", "fatigue_life", [scratch_file("nan.csv", "time,a\n0,0.01\n1,nan\n2,0.02\n")],
+     ["nan.csv", "finite"], code=1)
+tool("fatigue_life: negative amplitude scale", "fatigue_life",
+     [scratch_file("ok.csv", "time,a\n0,0.01\n1,0.02\n2,0.01\n"), "--scale", "-1"], ["scale"], code=2)
+tool("fatigue_life: missing file", "fatigue_life", [os.path.join(scratch, "absent.csv")], ["absent.csv"], code=1)
+tool("jansen_kinematics: zero steps", "jansen_kinematics", ["--steps", "0"], ["steps"], code=1)
+tool("flap_prbm: links that cannot assemble", "flap_prbm", ["--set", "crank_length_mm=100"],
+     ["cannot be closed"], code=1)
+
+shutil.rmtree(scratch, ignore_errors=True)
+total = sum(len(v) for v in outcomes.values())
+print("\n%d hostile inputs: %s" % (total, ", ".join("%d %s" % (len(v), k) for k, v in outcomes.items())))
+sys.exit(1 if failed else 0)
