@@ -163,6 +163,20 @@ solver_case("unwritable output directory", [hinge, S, "Output/Directory=/proc/co
 solver_case("one cell on more ranks than cells", [cantilever_3d, S, "Geometry/Parameters/nx=1",
             S, "Geometry/Parameters/ny=1", S, "Geometry/Parameters/nz=1", "--check"], [], code=0, np=3)
 
+# --- one rank fails alone --------------------------------------------------------------------
+# A failure injected on rank 1 only (COMPLIANT_TEST_FAIL_RANK), while rank 0 goes on into the
+# analysis and waits in a collective call: the run must end within seconds, with the message.
+out = os.path.join(scratch, "out-rank")
+start = time.time()
+try:
+    p = subprocess.run(["mpirun", "-np", "2", solver, hinge, "--set", "Output/Directory=" + out],
+                       capture_output=True, text=True, timeout=60, env=dict(env, COMPLIANT_TEST_FAIL_RANK="1"))
+    seconds = time.time() - start
+    record("one rank fails alone", p.returncode != 0 and "failure injected on rank 1" in p.stderr and seconds < 30,
+           "exit %d in %.1f s" % (p.returncode, seconds))
+except subprocess.TimeoutExpired:
+    record("one rank fails alone", False, "hung")
+
 # --- the standalone tools ----------------------------------------------------------------------
 # The standalone tools exit 1 on bad input (their own convention), with the same kind of message.
 tool("fatigue_life: empty CSV", "fatigue_life", [scratch_file("empty.csv", "")], ["empty.csv", "header"], code=1)
