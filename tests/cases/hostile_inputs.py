@@ -75,16 +75,21 @@ def solver_case(name, args, words, code=2, np=2, timeout=120):
 
 
 def tool(name, program, args, words, code=2):
+    """A standalone tool run in an empty folder: it must leave nothing there when it fails."""
+    cwd = tempfile.mkdtemp(dir=scratch)
     try:
-        p = subprocess.run([tools[program]] + args, capture_output=True, text=True, timeout=60)
+        p = subprocess.run([tools[program]] + args, capture_output=True, text=True, timeout=60, cwd=cwd)
     except subprocess.TimeoutExpired:
         record(name, False, "hung")
         return
     text = p.stdout + p.stderr
     missing = [w for w in words if w.lower() not in text.lower()]
     dumped = [d for d in DUMP_SIGNS if d in text]
-    ok = p.returncode == code and not missing and not dumped
+    left = [os.path.join(d, f) for d, _, files in os.walk(cwd) for f in files]
+    ok = p.returncode == code and not missing and not dumped and not left
     detail = "exit %d (want %d)" % (p.returncode, code)
+    if left:
+        detail += ", left behind: %s" % left
     if missing:
         detail += ", message lacks %s: %s" % (missing, p.stderr.strip()[-300:])
     record(name, ok, detail)

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -47,6 +48,46 @@ namespace
     out << std::setprecision(10);
     return out;
   }
+
+  // The CSV files of one run, written under temporary names and renamed only when the whole run
+  // succeeded: a run that fails leaves nothing (and removes the folder if it made it).
+  class PendingOutput
+  {
+  public:
+    explicit PendingOutput(const std::filesystem::path &directory)
+      : directory(directory)
+      , created(std::filesystem::create_directories(directory))
+    {}
+    PendingOutput(const PendingOutput &)            = delete;
+    PendingOutput &operator=(const PendingOutput &) = delete;
+    ~PendingOutput()
+    {
+      if (committed)
+        return;
+      std::error_code ignored;
+      for (const auto &name : names)
+        std::filesystem::remove(directory / (name + ".part"), ignored);
+      if (created)
+        std::filesystem::remove(directory, ignored); // only if empty
+    }
+    std::ofstream open(const std::string &name)
+    {
+      names.push_back(name);
+      return open_csv(directory / (name + ".part"));
+    }
+    void commit()
+    {
+      for (const auto &name : names)
+        std::filesystem::rename(directory / (name + ".part"), directory / name);
+      committed = true;
+    }
+
+  private:
+    std::filesystem::path    directory;
+    bool                     created   = false;
+    bool                     committed = false;
+    std::vector<std::string> names;
+  };
 
   FlapMechanism make_mechanism(const FlapParameters &p, const Pose &rest,
                                const double youngs_modulus, const double flexure_length)
@@ -158,12 +199,12 @@ namespace
       solve_pose(p.lengths, p.rest_pose == RestPose::start ? start : centre, p.branch);
     const MotionLaw motion{rotation ? MotionKind::full_rotation : MotionKind::harmonic_oscillation,
                            start, crank_sweep};
-    std::filesystem::create_directories(output);
+    PendingOutput files(output);
 
     double max_residual = 0., max_rocker = -1e9, min_rocker = 1e9;
     {
       // Two crank turns from just past the fold, to show the branch continuation.
-      auto csv = open_csv(output / "flap_kinematics.csv");
+      auto csv = files.open("flap_kinematics.csv");
       csv << "crank_deg,coupler_deg,rocker_deg,branch,dth3_dth2,dth4_dth2,d2th3_dth2,d2th4_dth2,"
              "transmission_deg,closure_residual_m,relative_discriminant\n";
       const double  step = 0.5 * deg;
@@ -228,7 +269,7 @@ namespace
               << " MPa, b = " << p.flexure_width / 1e-3 << " mm, h = " << p.flexure_thickness / 1e-3
               << " mm, l_k = " << p.flexure_length / 1e-3 << " mm)\n";
     {
-      auto csv = open_csv(output / "flap_torque_cycle.csv");
+      auto csv = files.open("flap_torque_cycle.csv");
       csv << "time_s,motor_deg,crank_deg,coupler_deg,rocker_deg,crank_speed_rad_s,"
              "crank_accel_rad_s2,drive_ratio,T_inertia_Nm,T_gravity_Nm,T_spring_Nm,T_rigid_Nm,"
              "T_compliant_Nm,T_rigid_motor_Nm,T_compliant_motor_Nm,P_rigid_W,P_compliant_W,"
@@ -310,7 +351,7 @@ namespace
 
     // --- Ratio against E and l_k -----------------------------------------------------------
     {
-      auto csv = open_csv(output / "flap_ratio_study.csv");
+      auto csv = files.open("flap_ratio_study.csv");
       csv << "youngs_modulus_mpa,flexure_length_mm,stiffness_Nm_rad,peak_ratio_gravity,"
              "rms_ratio_gravity,peak_ratio_no_gravity,rms_ratio_no_gravity,peak_compliant_Nm\n";
       std::cout << "\nPeak compliant/rigid torque ratio at the crank (with gravity) against E and "
@@ -376,6 +417,7 @@ namespace
     else
       std::cout << "\nMotor speed ripple: computed for the oscillating drive only.\n";
 
+    files.commit();
     std::cout << "\nCSV files written to " << output.string()
               << ": flap_kinematics.csv, flap_torque_cycle.csv, flap_ratio_study.csv\n";
     return 0;
