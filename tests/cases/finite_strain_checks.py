@@ -43,6 +43,12 @@ elif mode == "cutback":
     check(q["step_cutbacks"] >= 1, "the too-large step was cut back")
     check(q["load_factor"] == 1, "the run reached the target")
     check(abs(q["displacement_tip_y"] - 200 / 3.141592653589793) < 1.0, "tip on the arc within 1 % of L")
+    # Maximum step bounds the first step too (it used to be ignored there): Initial step 0.5 with
+    # Maximum step 0.1 takes at least 10 steps (a first step of 0.5 would give 6).
+    s = run_case(os.path.join(cases, "verification", "elastica_tip_load.prm"),
+                 ["Finite strain/Initial step=0.5", "Finite strain/Maximum step=0.1"])
+    print("Initial step 0.5, Maximum step 0.1: %d steps" % s["quantities"]["load_steps"])
+    check(s["quantities"]["load_steps"] >= 10, "Maximum step bounds the first step")
 elif mode == "stop":
     # A run that cannot converge stops with a message naming the load factor and the reason,
     # exit code 3, and keeps the converged steps in curve.csv.

@@ -6,6 +6,7 @@
 #include "output/field_output.h"
 #include "quantities/quantities.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -110,7 +111,9 @@ namespace compliant
       std::ofstream     curve;
       std::vector<std::string> columns;
 
-      double       step = stepping.initial_step, total_newton = 0;
+      // Maximum step bounds the first step too (a smaller maximum than initial step used to be
+      // ignored until the second step).
+      double       step = std::min(stepping.initial_step, stepping.maximum_step), total_newton = 0;
       unsigned int n_steps = 0, n_cutbacks = 0;
       std::string  failure;
       double       summary_limit_load_factor = -1;
