@@ -148,6 +148,24 @@ namespace compliant
     LinearStaticModel<dim>             chosen;
     bool                               met = false, finite_strain = false;
     std::string                        geometric_reason;
+    // One line per rung (before it joins `rungs`): model, mesh, cost, values, estimates, decision.
+    const auto print_rung = [&](const Rung &rung) {
+      if (!root)
+        return;
+      std::cout << "  (d) rung " << rungs.size() + 1 << ": " << rung.model << ", degree "
+                << p.element_degree << ", refinements " << rung.refinements;
+      if (target.adaptive && rung.model == "linear")
+        std::cout << " + " << rung.adaptive_cycles << " adaptive";
+      std::cout << ", " << static_cast<long>(rung.dofs) << " DoFs, " << std::setprecision(3)
+                << rung.seconds << " s;";
+      for (const auto &[n, v] : rung.values)
+        {
+          const auto &e = rung.estimates.at(n);
+          std::cout << ' ' << n << " = " << std::setprecision(8) << v << " (estimate "
+                    << (e.available ? percent(e.relative) : std::string("-")) << ")";
+        }
+      std::cout << "; " << rung.decision << std::endl;
+    };
     if (root)
       std::cout << "Model ladder: target " << percent(target.relative_error) << " on";
     for (const auto &n : names)
@@ -288,22 +306,7 @@ namespace compliant
               adaptive_refinements.push_back(kelly_refine_flags(*model.problem, target.refined_fraction));
           }
         rung.seconds = rung_timer.wall_time();
-        if (root)
-          {
-            std::cout << "  (d) rung " << k + 1 << ": linear, degree " << p.element_degree << ", refinements "
-                      << rung.refinements;
-            if (target.adaptive)
-              std::cout << " + " << rung.adaptive_cycles << " adaptive";
-            std::cout << ", " << static_cast<long>(rung.dofs) << " DoFs, "
-                      << std::setprecision(3) << rung.seconds << " s;";
-            for (const auto &[n, v] : rung.values)
-              {
-                const auto &e = rung.estimates[n];
-                std::cout << ' ' << n << " = " << std::setprecision(8) << v << " (estimate "
-                          << (e.available ? percent(e.relative) : std::string("-")) << ")";
-              }
-            std::cout << "; " << rung.decision << std::endl;
-          }
+        print_rung(rung);
         rungs.push_back(rung);
         chosen_parameters = std::move(rung_parameters);
         chosen            = std::move(model);
@@ -434,19 +437,7 @@ namespace compliant
                   else if (e.relative > target.relative_error)
                     rung.decision += " " + n + " estimate " + percent(e.relative) + " > target;";
               }
-            if (root)
-              {
-                std::cout << "  (d) rung " << rungs.size() + 1 << ": finite strain, degree " << p.element_degree
-                          << ", refinements " << r << ", " << static_cast<long>(rung.dofs) << " DoFs, "
-                          << std::setprecision(3) << rung.seconds << " s;";
-                for (const auto &[n, v] : rung.values)
-                  {
-                    const auto &e = rung.estimates[n];
-                    std::cout << ' ' << n << " = " << std::setprecision(8) << v << " (estimate "
-                              << (e.available ? percent(e.relative) : std::string("-")) << ")";
-                  }
-                std::cout << "; " << rung.decision << std::endl;
-              }
+            print_rung(rung);
             rungs.push_back(rung);
           }
         write_ladder(chosen_parameters->output_directory);
