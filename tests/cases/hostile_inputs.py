@@ -144,6 +144,16 @@ solver_case("point with nan coordinate", [hinge, S, "Quantities/Points=p: nan 0"
 solver_case("point outside the mesh", [hinge, S, "Quantities/Points=far: 1000 0"], ["far", "outside"])
 solver_case("target error negative", [hinge, S, "Target/Relative error=-1"], ["Relative error"])
 solver_case("modal: 0 modes", [modal, S, "Modal/Number of modes=0"], ["modes"])
+solver_case("modal on a distributed mesh", [modal, S, "Discretization/Mesh partition=distributed"],
+            ["Mesh partition", "modal", "shared"])
+solver_case("unknown mesh partition", [hinge, S, "Discretization/Mesh partition=scattered"],
+            ["Mesh partition", "scattered"])
+solver_case("adaptive ladder on a distributed mesh",
+            [hinge, S, "Target/Relative error=0.01", S, "Target/Refinement=adaptive", S,
+             "Discretization/Mesh partition=distributed"], ["Mesh partition", "adaptive"])
+solver_case("point outside a distributed mesh",
+            [hinge, S, "Discretization/Mesh partition=distributed", S, "Quantities/Points=far: 1000 0"],
+            ["far", "outside"])
 solver_case("modal: -3 modes", [modal, S, "Modal/Number of modes=-3"], ["modes"])
 solver_case("negative load step", [hinge, S, "Analysis=nonlinear static", S, "Finite strain/Initial step=-0.1"],
             ["Initial step"])

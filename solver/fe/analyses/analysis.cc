@@ -69,6 +69,22 @@ namespace compliant
     throw InputError("unknown analysis '" + name + "'");
   }
 
+  MeshPartitionChoice choose_mesh_partition(const RunContext &context, const CaseParameters &p,
+                                            const std::string &whole_mesh_reason)
+  {
+    try
+      {
+        return choose_mesh_partition(
+          p.mesh_partition,
+          estimate_dofs(context.geometry.n_cells, p.dimension, p.global_refinements, p.element_degree),
+          dealii::Utilities::MPI::n_mpi_processes(context.communicator), whole_mesh_reason);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("case file '" + p.case_file + "': " + e.what());
+      }
+  }
+
   bool report_mesh_and_stop_if_check(const RunContext &context, const unsigned int n_cells,
                                      const std::size_t n_dofs, const std::string &description)
   {
@@ -108,8 +124,11 @@ namespace compliant
       // Peak resident memory (VmHWM) of the largest rank: what sizes a model to a machine.
       dealii::Utilities::System::MemoryStats memory;
       dealii::Utilities::System::get_memory_stats(memory);
-      summary.quantities["memory_peak_max_rank_mb"] =
-        dealii::Utilities::MPI::max(memory.VmHWM / 1024.0, context.communicator);
+      // The smallest rank and the sum show how a partition spreads the model.
+      const auto peak = dealii::Utilities::MPI::min_max_avg(memory.VmHWM / 1024.0, context.communicator);
+      summary.quantities["memory_peak_max_rank_mb"] = peak.max;
+      summary.quantities["memory_peak_min_rank_mb"] = peak.min;
+      summary.quantities["memory_peak_all_ranks_mb"] = peak.sum;
     }
     try
       {

@@ -7,6 +7,7 @@
 
 #include "input/case_file.h"
 #include "mesh/gmsh_geometry.h"
+#include "mesh/mesh_partition.h"
 #include "output/summary.h"
 #include "quantities/comparison.h"
 
@@ -43,6 +44,11 @@ namespace compliant
   bool report_mesh_and_stop_if_check(const RunContext &context, unsigned int n_cells,
                                      std::size_t n_dofs, const std::string &description);
 
+  // Discretization/Mesh partition resolved for this case on this run's ranks. whole_mesh_reason
+  // names what of the analysis needs the whole mesh on every rank ("" if nothing); asking for
+  // 'distributed' then is an InputError.
+  MeshPartitionChoice choose_mesh_partition(const RunContext &context, const CaseParameters &p,
+                                            const std::string &whole_mesh_reason);
   // A summary with the settings every analysis records (analysis, model, mesh, degree, cells).
   RunSummary start_summary(const RunContext &context, bool hypercube_cells);
 

@@ -25,6 +25,7 @@ namespace compliant
         start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
       summary.settings.insert({"solver", problem.solver_method});
       summary.settings.insert({"solver_requested", p.solver_method});
+      summary.settings.insert({"mesh_partition", to_string(problem.mesh_partition.partition)});
       if (!problem.solver_note.empty())
         summary.settings.insert({"solver_note", problem.solver_note});
       if (!problem.statistics.multigrid_note.empty())

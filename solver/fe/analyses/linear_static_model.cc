@@ -13,7 +13,10 @@ namespace compliant
     const bool             root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
     dealii::Timer          timer;
     LinearStaticModel<dim> model;
-    model.problem      = std::make_unique<LinearElasticProblem<dim>>(p, context.geometry, comm);
+    // Refine flags from the model ladder's adaptive rungs are over the whole mesh.
+    const auto partition = choose_mesh_partition(
+      context, p, p.adaptive_refinements.empty() ? "" : "adaptive refinement (Target/Refinement)");
+    model.problem = std::make_unique<LinearElasticProblem<dim>>(p, context.geometry, comm, partition);
     auto &problem      = *model.problem;
     problem.matrix_free_allowed = true; // one solve of K u = f: no stored matrix needed
     try
@@ -26,8 +29,10 @@ namespace compliant
       {
         throw InputError("case file '" + p.case_file + "': " + e.what());
       }
-    if (report_mesh_and_stop_if_check(context, problem.triangulation.n_active_cells(),
-                                      problem.dof_handler.n_dofs(), ""))
+    if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
+                                      problem.dof_handler.n_dofs(),
+                                      partition.partition == MeshPartition::distributed ?
+                                        ", mesh distributed" : ""))
       {
         model.stopped_for_check = true;
         return model;

@@ -21,7 +21,8 @@ namespace compliant
       MPI_Comm      comm = context.communicator;
       const bool    root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
       dealii::Timer timer;
-      LinearElasticProblem<dim>         problem(p, context.geometry, comm);
+      LinearElasticProblem<dim>         problem(p, context.geometry, comm,
+                                                choose_mesh_partition(context, p, "the linkage analysis (pins tie DoFs of any two bodies)"));
       dealii::AffineConstraints<double> constraints;
       try
         {
@@ -35,7 +36,7 @@ namespace compliant
         {
           throw InputError("case file '" + p.case_file + "': " + e.what());
         }
-      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_active_cells(),
+      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
                                         problem.dof_handler.n_dofs(), ""))
         return 0;
 

@@ -103,7 +103,8 @@ namespace compliant
         std::cout << "note: a modal analysis reports frequencies, effective masses and Derived "
                      "quantities; ignored here: "
                   << ignored << "\n";
-      LinearElasticProblem<dim> problem(p, context.geometry, comm);
+      LinearElasticProblem<dim> problem(p, context.geometry, comm,
+                                        choose_mesh_partition(context, p, "the modal analysis (constraints gathered on every rank)"));
       // Supports hold still in a vibration: the constraints without their prescribed values.
       dealii::AffineConstraints<double> constraints;
       try
@@ -124,7 +125,7 @@ namespace compliant
         throw InputError("case file '" + p.case_file + "': Modal/Number of modes = " +
                          std::to_string(settings.n_modes) + " is too many for " +
                          std::to_string(problem.dof_handler.n_dofs()) + " DoFs");
-      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_active_cells(),
+      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
                                         problem.dof_handler.n_dofs(), supported ? "" : ", no supports (free)"))
         return 0;
 
@@ -162,7 +163,7 @@ namespace compliant
         summary.settings.insert({"ignored_quantities", ignored});
       auto &q            = summary.quantities;
       q["n_dofs"]        = problem.dof_handler.n_dofs();
-      q["n_cells"]       = problem.triangulation.n_active_cells();
+      q["n_cells"]       = problem.triangulation.n_global_active_cells();
       q["n_ranks"]       = dealii::Utilities::MPI::n_mpi_processes(comm);
       q["total_mass"]    = total_mass(problem);
       q["eigen_shift"]   = eigen.shift;

@@ -89,7 +89,8 @@ namespace compliant
       prm.leave_subsection();
 
       dealii::Timer            timer;
-      FiniteStrainProblem<dim> problem(p, settings, context.geometry, comm);
+      FiniteStrainProblem<dim> problem(p, settings, context.geometry, comm,
+                                       choose_mesh_partition(context, p, ""));
       try
         {
           parse_checks(p.checks);
@@ -100,8 +101,9 @@ namespace compliant
         {
           throw InputError("case file '" + p.case_file + "': " + e.what());
         }
-      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_active_cells(),
-                                        problem.dof_handler.n_dofs(), ", " + settings.law + (settings.mixed ? ", mixed u-p" : ", displacement")))
+      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
+                                        problem.dof_handler.n_dofs(), ", " + settings.law + (settings.mixed ? ", mixed u-p" : ", displacement") +
+                                          (problem.mesh_partition.partition == MeshPartition::distributed ? ", mesh distributed" : "")))
         return 0;
 
       // The response curve is written step by step: a run that stops keeps its converged steps.
@@ -235,6 +237,7 @@ namespace compliant
       summary.settings.insert({"formulation", settings.mixed ? "mixed" : "displacement"});
       summary.settings.insert({"solver", problem.linear_solver_description()});
       summary.settings.insert({"solver_requested", context.parameters.solver_method});
+      summary.settings.insert({"mesh_partition", to_string(problem.mesh_partition.partition)});
       summary.settings.insert({"status", failure.empty() ? "completed" : failure});
       summary.settings.insert({"curve", curve_file});
       summary.quantities = quantities;

@@ -37,12 +37,14 @@ namespace compliant
   template <int dim>
   LinearElasticProblem<dim>::LinearElasticProblem(const CaseParameters &parameters,
                                                   const MeshedGeometry &geometry,
-                                                  MPI_Comm              communicator)
+                                                  MPI_Comm              communicator,
+                                                  const MeshPartitionChoice &partition)
     : parameters(parameters)
     , geometry(geometry)
     , communicator(communicator)
-    , triangulation(communicator, Triangulation<dim>::none, false,
-                    parallel::shared::Triangulation<dim>::partition_metis)
+    , mesh_partition(partition)
+    , triangulation_storage(make_triangulation<dim>(partition.partition, communicator))
+    , triangulation(*triangulation_storage)
     , dof_handler(triangulation)
     , thickness(dim == 2 ? parameters.thickness : 1.0)
   {}

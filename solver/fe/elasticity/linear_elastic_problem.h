@@ -1,10 +1,10 @@
-// Linear elasticity on a METIS-partitioned shared triangulation with PETSc matrices:
+// Linear elasticity on a METIS-partitioned (shared or fully distributed) mesh with PETSc matrices:
 // 2D plane stress / plane strain and 3D, quadrilateral/hexahedral or simplex meshes, degree 1-3.
 #pragma once
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature.h>
-#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
@@ -16,6 +16,7 @@
 #include "elasticity/material.h"
 #include "input/case_file.h"
 #include "mesh/gmsh_geometry.h"
+#include "mesh/mesh_partition.h"
 
 #include <memory>
 
@@ -38,8 +39,9 @@ namespace compliant
   public:
     static constexpr int dimension = dim;
 
+    // The mesh is shared unless the analysis chose to distribute it (mesh/mesh_partition.h).
     LinearElasticProblem(const CaseParameters &parameters, const MeshedGeometry &geometry,
-                         MPI_Comm communicator);
+                         MPI_Comm communicator, const MeshPartitionChoice &partition = {});
 
     // Builds mesh, DoFs and constraints and decides the linear solver (solver_method); every
     // case-file name is checked here, before any work or output (throws std::invalid_argument).
@@ -77,7 +79,9 @@ namespace compliant
     const CaseParameters                       &parameters;
     const MeshedGeometry                       &geometry;
     MPI_Comm                                    communicator;
-    dealii::parallel::shared::Triangulation<dim> triangulation;
+    MeshPartitionChoice                          mesh_partition;
+    std::unique_ptr<dealii::parallel::TriangulationBase<dim>> triangulation_storage;
+    dealii::parallel::TriangulationBase<dim>    &triangulation;
     std::unique_ptr<dealii::FiniteElement<dim>> fe;
     std::unique_ptr<dealii::Mapping<dim>>       mapping;
     std::unique_ptr<dealii::Quadrature<dim>>    quadrature;

@@ -3,11 +3,13 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_dgp.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -22,6 +24,7 @@
 #include "linear_algebra/rigid_body_modes.h"
 #include "mesh/mesh_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -85,17 +88,33 @@ namespace compliant
     }
   } // namespace
 
+  namespace
+  {
+    // Vertices of the whole mesh (on a distributed mesh those on rank boundaries count twice).
+    template <int dim>
+    std::size_t n_global_vertices(const parallel::TriangulationBase<dim> &triangulation)
+    {
+      if (dynamic_cast<const parallel::shared::Triangulation<dim> *>(&triangulation))
+        return triangulation.n_vertices();
+      const auto owned = GridTools::get_locally_owned_vertices(triangulation);
+      return Utilities::MPI::sum<std::size_t>(std::count(owned.begin(), owned.end(), true),
+                                              triangulation.get_communicator());
+    }
+  } // namespace
+
   template <int dim>
   FiniteStrainProblem<dim>::FiniteStrainProblem(const CaseParameters       &parameters,
                                                 const FiniteStrainSettings &settings,
                                                 const MeshedGeometry       &geometry,
-                                                MPI_Comm                    communicator)
+                                                MPI_Comm                    communicator,
+                                                const MeshPartitionChoice  &partition)
     : parameters(parameters)
     , settings(settings)
     , geometry(geometry)
     , communicator(communicator)
-    , triangulation(communicator, Triangulation<dim>::none, false,
-                    parallel::shared::Triangulation<dim>::partition_metis)
+    , mesh_partition(partition)
+    , triangulation_storage(make_triangulation<dim>(partition.partition, communicator))
+    , triangulation(*triangulation_storage)
     , dof_handler(triangulation)
     , thickness(dim == 2 ? parameters.thickness : 1.0)
     , mixed(settings.mixed)
@@ -705,7 +724,7 @@ namespace compliant
         settings.petsc_options      = parameters.petsc_options;
         // The tangent turns with the structure, so the reference rigid-body modes GAMG would be
         // given are only approximate: factor the degree-1 level while it is small.
-        if (dim * triangulation.n_vertices() <= settings.direct_coarse_limit)
+        if (dim * n_global_vertices(triangulation) <= settings.direct_coarse_limit)
           settings.coarse = fast_solver::PMultigridSettings::Coarse::direct;
         tangent_multigrid = std::make_unique<TangentMultigrid>(
           *mapping, dof_handler,

@@ -6,7 +6,7 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature.h>
-#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
@@ -19,6 +19,7 @@
 #include "finite_strain/hyperelastic_law.h"
 #include "input/case_file.h"
 #include "mesh/gmsh_geometry.h"
+#include "mesh/mesh_partition.h"
 
 #include <memory>
 #include <stdexcept>
@@ -65,7 +66,8 @@ namespace compliant
     static constexpr int dimension = dim;
 
     FiniteStrainProblem(const CaseParameters &parameters, const FiniteStrainSettings &settings,
-                        const MeshedGeometry &geometry, MPI_Comm communicator);
+                        const MeshedGeometry &geometry, MPI_Comm communicator,
+                        const MeshPartitionChoice &partition = {});
     ~FiniteStrainProblem();
 
     void setup();
@@ -121,7 +123,9 @@ namespace compliant
     const FiniteStrainSettings                  &settings;
     const MeshedGeometry                        &geometry;
     MPI_Comm                                     communicator;
-    dealii::parallel::shared::Triangulation<dim> triangulation;
+    MeshPartitionChoice                          mesh_partition;
+    std::unique_ptr<dealii::parallel::TriangulationBase<dim>> triangulation_storage;
+    dealii::parallel::TriangulationBase<dim>    &triangulation;
     std::unique_ptr<dealii::FiniteElement<dim>>  fe;
     std::unique_ptr<dealii::Mapping<dim>>        mapping;
     std::unique_ptr<dealii::Quadrature<dim>>     quadrature;

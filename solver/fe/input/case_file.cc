@@ -54,6 +54,12 @@ namespace compliant
                         "Polynomial degree of the displacement elements (1 to 3).");
       prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 8),
                         "Uniform refinements of the gmsh mesh before solving.");
+      prm.declare_entry("Mesh partition", "auto", Patterns::Selection("auto|shared|distributed"),
+                        "How the mesh is spread over MPI ranks. shared: every rank holds the "
+                        "whole mesh and owns a METIS part. distributed: each rank holds only its "
+                        "part (read and cut on rank 0), so the memory per rank falls as ranks "
+                        "grow; static analyses only. auto: distributed from 2e5 estimated DoFs "
+                        "on more than one rank where the analysis allows it, else shared.");
     }
     prm.leave_subsection();
 
@@ -388,6 +394,7 @@ namespace compliant
     prm.enter_subsection("Discretization");
     p.element_degree     = prm.get_integer("Element degree");
     p.global_refinements = prm.get_integer("Global refinements");
+    p.mesh_partition     = prm.get("Mesh partition");
     prm.leave_subsection();
 
     prm.enter_subsection("Material");

@@ -179,6 +179,13 @@ namespace compliant
     for (unsigned int k = 0; k <= target.max_refinements && !met; ++k)
       {
         auto rung_parameters = std::make_unique<CaseParameters>(p);
+        // Kelly's refine flags are computed over the whole mesh: adaptive rungs share it.
+        if (target.adaptive && p.mesh_partition == "distributed")
+          throw InputError("case file '" + p.case_file + "': Discretization/Mesh partition = "
+                           "distributed is not possible with Target/Refinement = adaptive (the "
+                           "refine flags cover the whole mesh); use shared or auto");
+        if (target.adaptive)
+          rung_parameters->mesh_partition = "shared";
         if (target.adaptive)
           rung_parameters->adaptive_refinements = adaptive_refinements;
         else
@@ -200,7 +207,7 @@ namespace compliant
             }
         dealii::Timer rung_timer;
         auto model = solve_linear_static_model<dim>(context, *rung_parameters);
-        last_cells = model.problem->triangulation.n_active_cells();
+        last_cells = model.problem->triangulation.n_global_active_cells();
         if (model.stopped_for_check)
           return 0;
         if (target.adaptive && !model.problem->triangulation.all_reference_cells_are_hyper_cube())

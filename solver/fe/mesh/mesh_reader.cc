@@ -1,8 +1,11 @@
 #include "mesh/mesh_reader.h"
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/distributed/tria_base.h>
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
 
 #include "mesh/memory_estimate.h"
 
@@ -12,12 +15,50 @@
 
 namespace compliant
 {
+  namespace
+  {
+    // Rank 0 reads and refines the whole mesh, METIS cuts it, and each rank receives only its
+    // part with one layer of ghost cells; the serial mesh is gone before the solve.
+    template <int dim>
+    void create_fully_distributed(dealii::parallel::fullydistributed::Triangulation<dim> &triangulation,
+                                  const MeshedGeometry &geometry, const unsigned int global_refinements,
+                                  const std::vector<std::vector<bool>> &adaptive_refinements,
+                                  const unsigned int element_degree)
+    {
+      if (!adaptive_refinements.empty())
+        throw std::logic_error("create_triangulation: refine flags over the whole mesh need a "
+                               "shared triangulation");
+      // Checked on every rank before rank 0 starts, so that all ranks stop together.
+      refuse_refinement_beyond_memory(geometry.n_cells, dim, global_refinements, element_degree, 1);
+      const MPI_Comm communicator = triangulation.get_communicator();
+      const auto     description =
+        dealii::TriangulationDescription::Utilities::create_description_from_triangulation_in_groups<dim, dim>(
+          [&](dealii::Triangulation<dim> &serial) {
+            dealii::GridIn<dim> grid_in;
+            grid_in.attach_triangulation(serial);
+            std::istringstream in(geometry.msh_text);
+            grid_in.read_msh(in);
+            serial.refine_global(global_refinements);
+          },
+          [](dealii::Triangulation<dim> &serial, const MPI_Comm &comm, const unsigned int) {
+            dealii::GridTools::partition_triangulation(dealii::Utilities::MPI::n_mpi_processes(comm),
+                                                       serial);
+          },
+          communicator, dealii::Utilities::MPI::n_mpi_processes(communicator));
+      triangulation.create_triangulation(description);
+    }
+  } // namespace
+
   template <int dim>
   void create_triangulation(dealii::Triangulation<dim> &triangulation,
                             const MeshedGeometry &geometry, const unsigned int global_refinements,
                             const std::vector<std::vector<bool>> &adaptive_refinements,
                             const unsigned int element_degree)
   {
+    if (auto *distributed =
+          dynamic_cast<dealii::parallel::fullydistributed::Triangulation<dim> *>(&triangulation))
+      return create_fully_distributed(*distributed, geometry, global_refinements,
+                                      adaptive_refinements, element_degree);
     dealii::GridIn<dim> grid_in;
     grid_in.attach_triangulation(triangulation);
     std::istringstream in(geometry.msh_text);

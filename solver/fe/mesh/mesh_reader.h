@@ -1,5 +1,6 @@
 // Builds a triangulation from the Gmsh text of MeshedGeometry (every rank gets the whole mesh;
-// a parallel::shared triangulation partitions it with METIS), refined globally and then locally by
+// a parallel::shared triangulation partitions it with METIS; a parallel::fullydistributed one
+// gets only its METIS part, read and cut on rank 0), refined globally and then locally by
 // the given refine flags (one vector per cycle, over the active cells of that cycle; the same on
 // every rank, so the ranks build the same mesh). Refuses (ModelTooLarge) global refinements that
 // cannot fit in memory at the given element degree, before refining.

@@ -185,7 +185,7 @@ namespace compliant
     MPI_Comm    comm = problem.communicator;
 
     q["n_dofs"]            = problem.dof_handler.n_dofs();
-    q["n_cells"]           = problem.triangulation.n_active_cells();
+    q["n_cells"]           = problem.triangulation.n_global_active_cells();
     q["n_ranks"]           = Utilities::MPI::n_mpi_processes(comm);
 
     for (const auto &[name, point] : requested_points<dim>(p))
