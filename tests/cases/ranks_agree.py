@@ -4,9 +4,10 @@ tolerance. The solve is tightened to a residual reduction of 1e-13 and the quant
 to 1e-8 of the largest quantity of the same kind (a reaction that is zero in theory is compared
 with the largest reaction, not with itself).
 
-  ranks_agree.py <case> [--set Section/Name=value ...] [--expect setting=value ...]
+  ranks_agree.py <case> [--set-both Section/Name=value ...] [--set Section/Name=value ...]
+                 [--expect setting=value ...]
 
---set applies to the 2-rank run only (e.g. Discretization/Mesh partition=distributed: each rank
+--set-both applies to both runs; --set applies to the 2-rank run only (e.g. Discretization/Mesh partition=distributed: each rank
 then holds only its part of the mesh); --expect checks a setting of its summary.json."""
 import argparse
 import os
@@ -18,10 +19,11 @@ from study import run_case  # noqa: E402
 parser = argparse.ArgumentParser()
 parser.add_argument("case")
 parser.add_argument("--set", action="append", default=[], dest="sets")
+parser.add_argument("--set-both", action="append", default=[], dest="common")
 parser.add_argument("--expect", action="append", default=[])
 args = parser.parse_args()
 
-tight = ["Linear solver/Relative tolerance=1e-13"]
+tight = ["Linear solver/Relative tolerance=1e-13"] + args.common
 one = run_case(args.case, tight, np=1)["quantities"]
 summary_two = run_case(args.case, tight + args.sets, np=2)
 two = summary_two["quantities"]
@@ -39,6 +41,10 @@ skip = ("time_", "n_ranks", "solver_", "memory_", "newton_iterations", "linear_s
 bad = 0
 for key in sorted(one):
     if key.startswith(skip):
+        continue
+    # Where a peak lies is ambiguous when symmetric points tie (the clamped corners of a
+    # cantilever): its value is compared, not its location.
+    if key[-2:] in ("_x", "_y", "_z") and key[:-2] in one and "max" in key[:-2]:
         continue
     if key not in two:
         print("MISSING %-38s on 2 ranks" % key)

@@ -74,9 +74,12 @@ namespace compliant
   {
     try
       {
+        // Rank 0 decides for all: ranks that built different kinds of mesh would deadlock.
+        const unsigned int n_cells = dealii::Utilities::MPI::broadcast(
+          context.communicator, static_cast<unsigned int>(context.geometry.n_cells), 0);
         return choose_mesh_partition(
           p.mesh_partition,
-          estimate_dofs(context.geometry.n_cells, p.dimension, p.global_refinements, p.element_degree),
+          estimate_dofs(n_cells, p.dimension, p.global_refinements, p.element_degree),
           dealii::Utilities::MPI::n_mpi_processes(context.communicator), whole_mesh_reason);
       }
     catch (const std::invalid_argument &e)

@@ -58,6 +58,7 @@ namespace
     geometry.dimension    = dealii::Utilities::MPI::broadcast(comm, geometry.dimension, 0);
     geometry.boundary_ids = dealii::Utilities::MPI::broadcast(comm, geometry.boundary_ids, 0);
     geometry.material_ids = dealii::Utilities::MPI::broadcast(comm, geometry.material_ids, 0);
+    geometry.n_cells      = dealii::Utilities::MPI::broadcast(comm, geometry.n_cells, 0);
     return geometry;
   }
 
