@@ -45,10 +45,15 @@ namespace compliant
     prm.declare_entry("Maximum refinements", "4", Patterns::Integer(1, 12),
                       "Refinement rungs the ladder may add to the mesh of Discretization/Global "
                       "refinements.");
-    prm.declare_entry("Refinement", "uniform", Patterns::Selection("uniform|adaptive"),
+    prm.declare_entry("Refinement", "uniform", Patterns::Selection("uniform|adaptive|degree"),
                       "uniform: every rung halves every cell. adaptive: every rung refines the cells "
                       "with the largest Kelly indicators (gradient jumps), leaving hanging nodes; "
-                      "quadrilateral and hexahedral meshes only.");
+                      "quadrilateral and hexahedral meshes only. degree: the rungs raise the "
+                      "element degree on the case's mesh, 2, 3, 4 (only 2 on triangles and "
+                      "tetrahedra), then halve every cell at the highest degree; the error is extrapolated in the DoF "
+                      "count (p-extension). A degree step costs about 3x the DoFs in 3D where "
+                      "halving the cells costs 8x. Discretization/Element degree then applies to "
+                      "finite-strain rungs only.");
     prm.declare_entry("Refined cell fraction", "0.3", Patterns::Double(0.01, 1),
                       "Adaptive refinement: the fraction of cells refined per rung (largest "
                       "indicators first).");
@@ -63,6 +68,7 @@ namespace compliant
     t.max_refinements = prm.get_integer("Maximum refinements");
     t.allow_finite_strain = prm.get_bool("Allow finite strain");
     t.adaptive            = prm.get("Refinement") == "adaptive";
+    t.degree              = prm.get("Refinement") == "degree";
     t.refined_fraction    = prm.get_double("Refined cell fraction");
     for (auto name : split(prm.get("Quantities"), ','))
       {
@@ -130,7 +136,7 @@ namespace compliant
     struct Rung
     {
       std::string  model = "linear";
-      unsigned int refinements, adaptive_cycles;
+      unsigned int degree, refinements, adaptive_cycles;
       double       dofs, seconds;
       std::map<std::string, double>        values;
       std::map<std::string, ErrorEstimate> estimates;
@@ -142,8 +148,14 @@ namespace compliant
     std::uint64_t                      last_cells = 0;
     std::string                        too_large; // why the climb stopped short, if it did
     std::vector<std::vector<bool>>     adaptive_refinements;
-    std::map<std::string, double>      orders;   // adaptive: the last observed order, 0 if none
-    std::map<std::string, std::string> unsteady; // adaptive: why an estimate cannot stop yet
+    // Adaptive and degree rungs: the last observed order (0 if none), and why an estimate cannot
+    // stop the climb yet.
+    std::map<std::string, double>      orders;
+    std::map<std::string, std::string> unsteady;
+    // Degree rungs: 2, 3, 4 on hexahedra (degree 1 locks in bending and is far from the
+    // asymptotic rate); FE_SimplexP stops at 2 here (known after the first rung built the mesh).
+    constexpr unsigned int             lowest_degree  = 2;
+    unsigned int                       highest_degree = 4;
     std::unique_ptr<CaseParameters>    chosen_parameters;
     LinearStaticModel<dim>             chosen;
     bool                               met = false, finite_strain = false;
@@ -153,7 +165,7 @@ namespace compliant
       if (!root)
         return;
       std::cout << "  (d) rung " << rungs.size() + 1 << ": " << rung.model << ", degree "
-                << p.element_degree << ", refinements " << rung.refinements;
+                << rung.degree << ", refinements " << rung.refinements;
       if (target.adaptive && rung.model == "linear")
         std::cout << " + " << rung.adaptive_cycles << " adaptive";
       std::cout << ", " << static_cast<long>(rung.dofs) << " DoFs, " << std::setprecision(3)
@@ -179,6 +191,12 @@ namespace compliant
     for (unsigned int k = 0; k <= target.max_refinements && !met; ++k)
       {
         auto rung_parameters = std::make_unique<CaseParameters>(p);
+        // Degree rungs: 2, 3, ... up to the highest degree on the case's mesh, then halve cells.
+        const unsigned int h_steps = !target.degree                               ? k :
+                                     k + lowest_degree > highest_degree ? k + lowest_degree - highest_degree :
+                                                                          0;
+        if (target.degree)
+          rung_parameters->element_degree = std::min(k + lowest_degree, highest_degree);
         // Kelly's refine flags are computed over the whole mesh: adaptive rungs share it.
         if (target.adaptive && p.mesh_partition == "distributed")
           throw InputError("case file '" + p.case_file + "': Discretization/Mesh partition = "
@@ -189,12 +207,15 @@ namespace compliant
         if (target.adaptive)
           rung_parameters->adaptive_refinements = adaptive_refinements;
         else
-          rung_parameters->global_refinements = p.global_refinements + k;
+          rung_parameters->global_refinements = p.global_refinements + h_steps;
         if (k > 0 && !target.adaptive)
           try
             {
-              // One more uniform refinement of the last rung's mesh must fit in memory.
-              refuse_refinement_beyond_memory(last_cells, dim, 1, p.element_degree,
+              // The next rung (one more uniform refinement, or a higher degree, of the last
+              // rung's mesh) must fit in memory.
+              const bool refines = !target.degree || h_steps > 0;
+              refuse_refinement_beyond_memory(last_cells, dim, refines ? 1 : 0,
+                                              rung_parameters->element_degree,
                                               dealii::Utilities::MPI::n_mpi_processes(context.communicator));
             }
           catch (const ModelTooLarge &e)
@@ -214,12 +235,16 @@ namespace compliant
           throw InputError("case file '" + p.case_file + "', Target/Refinement: adaptive refinement "
                            "needs a quadrilateral or hexahedral mesh (no hanging nodes on triangles or "
                            "tetrahedra); use uniform");
+        if (k == 0 && !model.problem->triangulation.all_reference_cells_are_hyper_cube())
+          highest_degree = lowest_degree;
         Rung rung;
+        rung.degree          = rung_parameters->element_degree;
         rung.refinements     = rung_parameters->global_refinements;
         rung.adaptive_cycles = rung_parameters->adaptive_refinements.size();
         rung.dofs            = model.quantities.at("n_dofs");
         // Uniform rungs halve h exactly; adaptive ones measure it by the DoF count.
-        mesh_sizes.push_back(target.adaptive ? std::pow(rung.dofs, -1.0 / dim) : std::ldexp(1.0, -static_cast<int>(k)));
+        mesh_sizes.push_back(target.adaptive || target.degree ? std::pow(rung.dofs, -1.0 / dim) :
+                                                                std::ldexp(1.0, -static_cast<int>(k)));
         met              = true;
         // Targets may name derived quantities (Quantities/Derived) as well as computed ones.
         auto rung_quantities = model.quantities;
@@ -240,15 +265,16 @@ namespace compliant
             rung.values[n] = found->second;
             history[n].push_back(found->second);
             // Assumed order in h for a smooth quantity: degree + 1 (displacements at points).
-            const auto e      = estimate_discretization_error(history[n], mesh_sizes, p.element_degree + 1.0);
+            const auto e      = estimate_discretization_error(history[n], mesh_sizes, rung.degree + 1.0);
             rung.estimates[n] = e;
             // Only an observed order ends the climb: an assumed one is optimistic at singularities.
             // Adaptive meshes converge unevenly while the refinement finds the singular corners
             // (Cook's membrane: observed orders 2.8, 6.2, 3.9 on the first rungs, estimates 6x too
             // small): there the order must also hold steady over two successive triples (within a
-            // factor 1.5).
+            // factor 1.5). Degree rungs likewise: convergence in N speeds up with the degree on
+            // smooth problems and is algebraic at singularities.
             bool steady = true;
-            if (target.adaptive)
+            if (target.adaptive || target.degree)
               {
                 const double previous = orders[n];
                 steady = e.order_observed && previous > 0 &&
@@ -299,7 +325,9 @@ namespace compliant
           rung.decision = "target NOT met within Target/Maximum refinements";
         else
           {
-            rung.decision = target.adaptive ? "refine adaptively:" : "refine:";
+            rung.decision = target.adaptive                                   ? "refine adaptively:" :
+                            target.degree && k + lowest_degree < highest_degree ? "raise the degree:" :
+                                                                      "refine:";
             for (const auto &[n, e] : rung.estimates)
               if (!e.available)
                 rung.decision += " " + n + " " + e.note + ";";
@@ -337,7 +365,7 @@ namespace compliant
       for (std::size_t k = 0; k < rungs.size(); ++k)
         {
           cumulative += rungs[k].seconds;
-          out << k + 1 << ',' << rungs[k].model << ',' << p.element_degree << ',' << rungs[k].refinements << ','
+          out << k + 1 << ',' << rungs[k].model << ',' << rungs[k].degree << ',' << rungs[k].refinements << ','
               << rungs[k].adaptive_cycles << ',' << rungs[k].dofs << ',' << rungs[k].seconds << ',' << cumulative;
           for (const auto &n : names)
             {
@@ -382,11 +410,13 @@ namespace compliant
                 }
             CaseParameters nonlinear     = *chosen_parameters;
             nonlinear.analysis           = "nonlinear static";
+            nonlinear.element_degree     = p.element_degree; // degree rungs drive linear rungs only
             nonlinear.global_refinements = r;
             RunContext nonlinear_context{nonlinear, context.prm, context.geometry, context.check_only,
                                          context.communicator};
             Rung          rung;
             rung.model           = "finite strain";
+            rung.degree          = nonlinear.element_degree;
             rung.refinements     = r;
             rung.adaptive_cycles = 0;
             dealii::Timer rung_timer;

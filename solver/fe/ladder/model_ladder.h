@@ -4,8 +4,10 @@
 // climb; (b) 2D before 3D is the user's choice of Model (the ladder does not change the dimension);
 // (c) linear before finite strain: after the first linear rung the largest material rotation theta
 // decides, the geometric error of a linear model being of order theta^2; (d) refinement at the
-// case's degree, uniform or adaptive (Kelly indicator, hanging nodes), until the Richardson
-// estimate (observed order, mesh size h = N^(-1/dim) from the DoF count N) meets the target. Each rung is
+// case's degree, uniform or adaptive (Kelly indicator, hanging nodes), or first the degree (2, 3, 4
+// on the case's mesh, then halved cells at the highest degree), until the Richardson estimate
+// (observed order, mesh size h = N^(-1/dim) from the DoF count N; for a degree sequence this is
+// the p-extension extrapolation of Szabo and Babuska) meets the target. Each rung is
 // printed (model, DoFs, time, values, estimates, why it went on) and written to ladder.csv.
 #pragma once
 
@@ -25,6 +27,7 @@ namespace compliant
     unsigned int             max_refinements = 4;
     bool                     allow_finite_strain = true;
     bool                     adaptive = false;       // Refinement = adaptive
+    bool                     degree   = false;       // Refinement = degree
     double                   refined_fraction = 0.3; // of the cells, per adaptive rung
   };
 
