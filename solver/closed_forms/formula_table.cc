@@ -1,6 +1,7 @@
 #include "formula_table.h"
 
 #include "beams.h"
+#include "cylinders.h"
 #include "elastica.h"
 #include "input_checks.h"
 #include "prbm.h"
@@ -400,6 +401,49 @@ namespace closed_forms
            }});
       }
 
+      // ---------------------------------------------------------------- thick cylinder (Lame)
+      void
+      add_cylinder_formulas(std::vector<Formula> &table)
+      {
+        const std::string source = "Timoshenko and Goodier, Theory of Elasticity, sec. 28 (Lame)";
+        const std::vector<Argument> radii{positive("r_i", "inner radius"), positive("r_o", "outer radius"),
+                                          Argument{"p_i", "inner pressure (default 0)", false, 0.0, false},
+                                          Argument{"p_o", "outer pressure (default 0)", false, 0.0, false},
+                                          positive("r", "radius where the value is wanted")};
+        std::vector<Argument> displacement_args = radii;
+        displacement_args.push_back(modulus_E());
+        displacement_args.push_back(poisson_nu());
+        for (const bool plane_strain : {true, false})
+          table.push_back(
+            {plane_strain ? "lame_radial_displacement_plane_strain" :
+                            "lame_radial_displacement_plane_stress",
+             std::string("radial displacement of a thick-walled cylinder under inner and outer "
+                         "pressure, ") +
+               (plane_strain ? "long cylinder (plane strain)" : "thin ring (plane stress)") +
+               " (length)",
+             source, displacement_args, [plane_strain](const Args &p) {
+               return Result{lame_radial_displacement(p.at("r_i"), p.at("r_o"), p.at("p_i"), p.at("p_o"),
+                                                      p.at("E"), p.at("nu"), p.at("r"), plane_strain),
+                             {}};
+             }});
+        table.push_back({"lame_hoop_stress",
+                         "hoop stress sigma_theta of a thick-walled cylinder under inner and outer "
+                         "pressure (stress; the same in plane stress and plane strain)",
+                         source, radii, [](const Args &p) {
+                           return Result{lame_hoop_stress(p.at("r_i"), p.at("r_o"), p.at("p_i"),
+                                                          p.at("p_o"), p.at("r")),
+                                         {}};
+                         }});
+        table.push_back({"lame_radial_stress",
+                         "radial stress sigma_r of a thick-walled cylinder under inner and outer "
+                         "pressure (stress)",
+                         source, radii, [](const Args &p) {
+                           return Result{lame_radial_stress(p.at("r_i"), p.at("r_o"), p.at("p_i"),
+                                                            p.at("p_o"), p.at("r")),
+                                         {}};
+                         }});
+      }
+
       // ---------------------------------------------------------------- elastica
       void
       add_elastica_formulas(std::vector<Formula> &table)
@@ -478,6 +522,7 @@ namespace closed_forms
       add_prbm_formulas(table);
       add_torsion_formulas(table);
       add_elastica_formulas(table);
+      add_cylinder_formulas(table);
       return table;
     }
   } // namespace internal

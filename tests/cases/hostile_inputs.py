@@ -140,6 +140,11 @@ solver_case("traction inf", [hinge, S, "Loads/Traction=drive: 0 inf"], ["Tractio
 solver_case("traction syntax error", [hinge, S, "Loads/Traction=drive: 0 -1/(x-"], ["Traction"])
 solver_case("traction NaN expression", [hinge, S, "Loads/Traction=drive: 0 1/(x-x)"], ["Traction", "not finite"])
 solver_case("traction with one component", [hinge, S, "Loads/Traction=drive: 1"], ["Traction"])
+solver_case("pressure syntax error", [hinge, S, "Loads/Pressure=drive: 2*(x-"], ["Pressure"])
+solver_case("pressure on an unknown boundary", [hinge, S, "Loads/Pressure=lid: 1"], ["Pressure", "lid"])
+solver_case("pressure given twice", [hinge, S, "Loads/Pressure=drive: 1; drive: 2"], ["Pressure", "twice"])
+solver_case("pressure at finite strain", [hinge, S, "Analysis=nonlinear static", S, "Loads/Pressure=drive: 1"],
+            ["Pressure", "Follower pressure"])
 solver_case("point with nan coordinate", [hinge, S, "Quantities/Points=p: nan 0"], ["p"])
 solver_case("point outside the mesh", [hinge, S, "Quantities/Points=far: 1000 0"], ["far", "outside"])
 solver_case("target error negative", [hinge, S, "Target/Relative error=-1"], ["Relative error"])

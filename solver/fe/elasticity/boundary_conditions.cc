@@ -175,6 +175,19 @@ namespace compliant
         }
     }
     {
+      const std::string where = "Loads/Pressure";
+      for (const auto &item : parse_spec_list(p.pressure, where))
+        {
+          if (item.fields.size() != 1 || !item.fields[0].key.empty() || trim(item.fields[0].value).empty())
+            throw std::invalid_argument(where + ": expected 'boundary: p' (a number or an expression "
+                                        "of x, y, z)");
+          const int id = boundary_id_of(item.name, boundaries, where);
+          if (bc.pressures.count(id))
+            throw std::invalid_argument(where + ": '" + item.name + "' is given twice");
+          bc.pressures[id] = trim(item.fields[0].value);
+        }
+    }
+    {
       const std::string where = "Loads/Total force";
       for (const auto &item : parse_spec_list(p.total_force, where))
         {

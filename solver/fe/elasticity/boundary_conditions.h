@@ -43,6 +43,8 @@ namespace compliant
     // Tractions given as expressions of x, y, z and geometry parameters, per boundary id.
     std::map<int, std::vector<std::string>>      traction_fields;
     std::map<std::string, dealii::Tensor<1, dim>> total_forces; // by boundary name
+    // Normal pressure (number or expression of x, y, z) per boundary id: t = -p n.
+    std::map<int, std::string>                   pressures;
     dealii::Tensor<1, dim>                       body_force;
     dealii::Tensor<1, dim>                       gravity;
   };

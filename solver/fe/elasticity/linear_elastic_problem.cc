@@ -298,12 +298,32 @@ namespace compliant
                                         "; use x, y, z and geometry parameters");
           }
       }
+    std::map<int, std::unique_ptr<FunctionParser<dim>>> pressure_fields;
+    for (const auto &[id, expression] : boundary_conditions.pressures)
+      {
+        pressure_fields[id] = std::make_unique<FunctionParser<dim>>(1);
+        try
+          {
+            pressure_fields[id]->initialize(dim == 2 ? "x,y" : "x,y,z", expression,
+                                            parameters.geometry_parameters);
+            pressure_fields[id]->value(Point<dim>());
+          }
+        catch (const std::exception &)
+          {
+            std::string boundary = std::to_string(id);
+            for (const auto &[name, boundary_id] : geometry.boundary_ids)
+              if (boundary_id == id)
+                boundary = name;
+            throw std::invalid_argument("Loads/Pressure: cannot evaluate '" + expression + "' on '" +
+                                        boundary + "'; use a number or x, y, z and geometry parameters");
+          }
+      }
 
     FEValues<dim>     fe_values(*mapping, *fe, *quadrature,
                             update_gradients | update_values | update_JxW_values);
     FEFaceValues<dim> fe_face_values(*mapping, *fe, *face_quadrature,
                                      update_values | update_JxW_values |
-                                       update_quadrature_points);
+                                       update_quadrature_points | update_normal_vectors);
     const FEValuesExtractors::Vector u(0);
     Vector<double>                   field_value(dim);
     const unsigned int               n = fe->n_dofs_per_cell();
@@ -347,7 +367,9 @@ namespace compliant
                 const int  id    = cell->face(f)->boundary_id();
                 const auto t     = tractions.find(id);
                 const auto field = traction_fields.find(id);
-                if (t == tractions.end() && field == traction_fields.end())
+                const auto pressure = pressure_fields.find(id);
+                if (t == tractions.end() && field == traction_fields.end() &&
+                    pressure == pressure_fields.end())
                   continue;
                 fe_face_values.reinit(cell, f);
                 for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
@@ -359,6 +381,9 @@ namespace compliant
                         for (unsigned int d = 0; d < dim; ++d)
                           traction[d] += field_value[d];
                       }
+                    if (pressure != pressure_fields.end())
+                      traction -= pressure->second->value(fe_face_values.quadrature_point(q)) *
+                                  fe_face_values.normal_vector(q);
                     for (unsigned int i = 0; i < n; ++i)
                       cell_rhs(i) += fe_face_values[u].value(i, q) * traction *
                                      fe_face_values.JxW(q) * thickness;
@@ -382,7 +407,7 @@ namespace compliant
     if (!std::isfinite(external_forces.l2_norm()))
       throw std::invalid_argument("Loads: the loads are not finite (NaN or infinity) somewhere on "
                                   "the loaded boundaries or bodies: check the expressions of "
-                                  "Loads/Traction, Loads/Body force and Loads/Total force");
+                                  "Loads/Traction, Loads/Pressure, Loads/Body force and Loads/Total force");
     statistics.assembly_seconds = timer.wall_time();
   }
 

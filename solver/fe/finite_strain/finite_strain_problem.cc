@@ -169,6 +169,10 @@ namespace compliant
     if (!boundary_conditions.total_forces.empty())
       throw std::invalid_argument("Loads/Total force: not available in finite strain (the loaded "
                                   "area changes); use Traction (dead, per reference area)");
+    if (!boundary_conditions.pressures.empty())
+      throw std::invalid_argument("Loads/Pressure: acts on the undeformed boundary, a linear load; at "
+                                  "finite strain use Finite strain/Follower pressure (it turns and "
+                                  "stretches with the surface)");
     dead_tractions = boundary_conditions.tractions;
     for (const auto &item : parse_spec_list(settings.follower_pressure, "Finite strain/Follower pressure"))
       {

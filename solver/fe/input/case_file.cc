@@ -100,6 +100,12 @@ namespace compliant
                         "Traction vector (force per area) on boundaries: 'top: 0 -1 0'.");
       prm.declare_entry("Total force", "", Patterns::Anything(),
                         "Total force spread uniformly over a boundary: 'right: 0 -1'.");
+      prm.declare_entry("Pressure", "", Patterns::Anything(),
+                        "Pressure (force per area) normal to boundaries, positive pushing on the "
+                        "body (against the outward normal): 'inner: 2; outer: 0.5*(1+y/10)', a "
+                        "number or an expression of x, y, z and geometry parameters. On the "
+                        "undeformed boundary: linear analyses; at finite strain use Finite "
+                        "strain/Follower pressure.");
       prm.declare_entry("Body force", "", Patterns::Anything(),
                         "Force per volume on every body: '0 -9.81 0'.");
       prm.declare_entry("Gravity", "", Patterns::Anything(),
@@ -416,6 +422,7 @@ namespace compliant
     prm.enter_subsection("Loads");
     p.traction    = prm.get("Traction");
     p.total_force = prm.get("Total force");
+    p.pressure    = prm.get("Pressure");
     p.body_force  = prm.get("Body force");
     p.gravity     = prm.get("Gravity");
     prm.leave_subsection();

@@ -42,6 +42,7 @@ namespace compliant
 
     std::string clamped, displacement, rotation;
     std::string traction, total_force, body_force, gravity;
+    std::string pressure; // 'boundary: p' on the undeformed normal (linear analyses)
 
     std::string solver_method;
     double      solver_tolerance = 1e-10;

@@ -49,7 +49,7 @@ namespace
     {"P", 0.1},   {"M", 1.0},      {"T", 1.0},        {"L", 100.0},       {"l", 5.0},
     {"E", 2000.0}, {"nu", 0.35},   {"b", 3.0},        {"h", 1.5},         {"a", 4.0},
     {"rho", 1.2e-9}, {"n", 2.0},   {"kappa", 5.0 / 6.0}, {"gamma", 0.85}, {"K_theta", 2.65},
-    {"Theta", 0.4}, {"link_length", 60.0}};
+    {"Theta", 0.4}, {"link_length", 60.0}, {"r_i", 10.0}, {"r_o", 20.0}, {"r", 15.0}};
 } // namespace
 
 TEST(Registry, NamesAreUniqueSnakeCaseAndDocumented)
