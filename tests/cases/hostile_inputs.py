@@ -147,6 +147,10 @@ solver_case("pressure at finite strain", [hinge, S, "Analysis=nonlinear static",
             ["Pressure", "Follower pressure"])
 solver_case("point with nan coordinate", [hinge, S, "Quantities/Points=p: nan 0"], ["p"])
 solver_case("point outside the mesh", [hinge, S, "Quantities/Points=far: 1000 0"], ["far", "outside"])
+solver_case("stress point outside the mesh", [hinge, S, "Quantities/Stress points=far: 1000 0"],
+            ["Stress points", "far", "outside"])
+solver_case("stress point with one coordinate", [hinge, S, "Quantities/Stress points=p: 1"],
+            ["Stress points", "coordinates"])
 solver_case("target error negative", [hinge, S, "Target/Relative error=-1"], ["Relative error"])
 solver_case("modal: 0 modes", [modal, S, "Modal/Number of modes=0"], ["modes"])
 solver_case("modal on a distributed mesh", [modal, S, "Discretization/Mesh partition=distributed"],

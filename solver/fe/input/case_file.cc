@@ -148,6 +148,14 @@ namespace compliant
                         "Boundaries whose average displacement is reported: 'right, top'.");
       prm.declare_entry("Rotations", "", Patterns::Anything(),
                         "Boundaries whose best-fit rigid rotation is reported: 'right'.");
+      prm.declare_entry("Stress points", "", Patterns::Anything(),
+                        "Named points for stress output: 'hole: 10 0; root: L/2 H/2'. Gives "
+                        "stress_<name>_<xx|yy|zz|xy[|xz|yz]> (Cauchy, from the stress field "
+                        "recovered by L2 projection onto continuous elements of the displacement's "
+                        "degree), von_mises_<name>, principal_stress_<name>_<1|2|3> (largest "
+                        "first), and the components and von Mises with the suffix _raw (from the "
+                        "displacement gradient in the cell holding the point: discontinuous "
+                        "between cells).");
       prm.declare_entry("Region maxima", "", Patterns::Anything(),
                         "Bodies (physical groups of full dimension) whose peak strain and stress "
                         "are reported with where they occur: 'flexure_A, flexure_B' ('*': every "
@@ -441,6 +449,7 @@ namespace compliant
     p.rotations          = prm.get("Rotations");
     p.derived            = prm.get("Derived");
     p.region_maxima      = prm.get("Region maxima");
+    p.stress_points      = prm.get("Stress points");
     prm.leave_subsection();
 
     prm.enter_subsection("Comparison");

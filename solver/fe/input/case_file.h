@@ -51,6 +51,7 @@ namespace compliant
 
     std::string points, reactions, mean_displacements, rotations, derived;
     std::string region_maxima; // bodies whose peak strain and stress are reported
+    std::string stress_points; // 'name: x y [z]': stress components, von Mises, principal
     std::string checks;
 
     std::string output_directory;

@@ -1,6 +1,8 @@
 #include "quantities/quantities.h"
 
+#include "quantities/named_points.h"
 #include "quantities/peak_sampling.h"
+#include "quantities/point_stress.h"
 #include "quantities/region_maxima.h"
 
 #include <deal.II/base/quadrature_lib.h>
@@ -25,21 +27,7 @@ namespace compliant
     template <int dim>
     std::map<std::string, Point<dim>> requested_points(const CaseParameters &p)
     {
-      std::map<std::string, Point<dim>> points;
-      for (const auto &item : parse_spec_list(p.points, "Quantities/Points"))
-        {
-          if (item.fields.size() != 1 || !item.fields[0].key.empty())
-            throw std::invalid_argument("Quantities/Points: expected 'name: x y [z]' for '" +
-                                        item.name + "'");
-          const auto x = evaluate_coordinates(item.fields[0].value, p.geometry_parameters,
-                                              "Quantities/Points '" + item.name + "'");
-          if (x.size() != dim)
-            throw std::invalid_argument("Quantities/Points: '" + item.name + "' needs " +
-                                        std::to_string(dim) + " coordinates");
-          for (unsigned int d = 0; d < dim; ++d)
-            points[item.name][d] = x[d];
-        }
-      return points;
+      return parse_named_points<dim>(p.points, p.geometry_parameters, "Quantities/Points");
     }
 
     // Moment points of the Reactions entry; boundaries without one use the origin.
@@ -173,6 +161,7 @@ namespace compliant
     for (const auto &name : names_in(p.rotations))
       boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Rotations");
     validate_region_maxima(problem);
+    validate_point_stresses(problem);
   }
 
   template <class Problem>
@@ -382,6 +371,7 @@ namespace compliant
       q["yield_safety_factor"] = Utilities::MPI::min(safety, comm);
     }
     add_region_maxima(problem, q);
+    add_point_stresses(problem, q);
     return q;
   }
 
