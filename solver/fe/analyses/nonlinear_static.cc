@@ -1,5 +1,7 @@
 #include "analyses/nonlinear_static.h"
 
+#include "analyses/interruption.h"
+
 #include <deal.II/base/timer.h>
 
 #include "finite_strain/finite_strain_problem.h"
@@ -109,9 +111,18 @@ namespace compliant
       // The response curve is written step by step: a run that stops keeps its converged steps.
       if (root)
         std::filesystem::create_directories(p.output_directory);
+      // Rewritten whole under a temporary name and renamed after every step, so that a run
+      // stopped at any moment leaves a complete curve of its converged steps, never a torn line.
       const std::string curve_file = p.output_directory + "/curve.csv";
-      std::ofstream     curve;
+      std::string       curve;
       std::vector<std::string> columns;
+      const auto        write_curve = [&]() {
+        std::ofstream(curve_file + ".tmp") << curve;
+        std::filesystem::rename(curve_file + ".tmp", curve_file);
+      };
+      InterruptionGuard interruption;
+      problem.stop_requested = [&]() { return interruption.requested(comm); };
+      bool interrupted = false;
 
       // Maximum step bounds the first step too (a smaller maximum than initial step used to be
       // ignored until the second step).
@@ -127,6 +138,8 @@ namespace compliant
           const double target = std::min(1.0, problem.load_factor + step);
           try
             {
+              if (interruption.requested(comm))
+                throw RunInterrupted();
               const double previous = problem.load_factor;
               const dealii::PETScWrappers::MPI::Vector previous_state = problem.solution;
               const auto   report   = problem.solve_to(target);
@@ -187,26 +200,35 @@ namespace compliant
                   std::cout << std::endl;
                   if (columns.empty())
                     {
-                      curve.open(curve_file);
-                      curve << "step,load_factor,newton_iterations";
+                      curve = "step,load_factor,newton_iterations";
                       for (const auto &[k, v] : quantities)
                         if (k.rfind("time_", 0) != 0)
                           {
                             columns.push_back(k);
-                            curve << "," << k;
+                            curve += "," + k;
                           }
-                      curve << "\n";
+                      curve += "\n";
                     }
-                  curve << n_steps << "," << std::setprecision(12) << target << ","
-                        << report.iterations;
+                  std::ostringstream line;
+                  line << n_steps << "," << std::setprecision(12) << target << "," << report.iterations;
                   for (const auto &k : columns)
-                    curve << "," << quantities[k];
-                  curve << std::endl;
+                    line << "," << quantities[k];
+                  curve += line.str() + "\n";
+                  write_curve();
                 }
               if (!failure.empty())
                 break;
               if (report.iterations <= 6)
                 step = std::min(stepping.maximum_step, 1.5 * step);
+            }
+          catch (const RunInterrupted &)
+            {
+              interrupted = true;
+              std::ostringstream message;
+              message << "interrupted by " << interruption.signal_name(comm) << " at load factor "
+                      << problem.load_factor << " (last converged step, " << n_steps << " steps)";
+              failure = message.str();
+              break;
             }
           catch (const StepFailure &e)
             {
@@ -229,7 +251,10 @@ namespace compliant
         }
 
       if (root && columns.empty()) // no step converged: the curve still says what it would hold
-        std::ofstream(curve_file) << "step,load_factor,newton_iterations\n";
+        {
+          curve = "step,load_factor,newton_iterations\n";
+          write_curve();
+        }
 
       RunSummary summary =
         start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
@@ -264,7 +289,7 @@ namespace compliant
           if (root)
             std::cerr << "error: " << failure << "; converged steps are in " << curve_file
                       << std::endl;
-          return 3;
+          return interrupted ? interruption.exit_code(comm) : 3;
         }
       return 0;
   }

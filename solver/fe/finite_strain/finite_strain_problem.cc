@@ -519,6 +519,8 @@ namespace compliant
       {
         for (unsigned int it = 0; it < settings.max_newton_iterations; ++it)
           {
+            if (stop_requested && stop_requested())
+              throw RunInterrupted();
             ghosted                = u;
             const auto constraints = make_constraints(target, false, ghosted);
             const bool matrix_free = matrix_free_tangent();

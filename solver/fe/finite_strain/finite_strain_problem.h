@@ -21,6 +21,7 @@
 #include "mesh/gmsh_geometry.h"
 #include "mesh/mesh_partition.h"
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 
@@ -49,6 +50,13 @@ namespace compliant
   struct StepFailure : std::runtime_error
   {
     using std::runtime_error::runtime_error;
+  };
+
+  // A load step stopped because the run was asked to stop (a signal); not a runtime_error, so
+  // that no step cutting catches it. The converged state of the previous step remains.
+  struct RunInterrupted : std::exception
+  {
+    const char *what() const noexcept override { return "interrupted"; }
   };
 
   struct NewtonReport
@@ -136,6 +144,9 @@ namespace compliant
     std::map<int, HyperelasticLaw>               laws;
     BoundaryConditions<dim>                      boundary_conditions;
     double                                       thickness = 1;
+    // Asked (collectively) before every Newton iteration; true stops the step with
+    // RunInterrupted. Empty: never.
+    std::function<bool()>                        stop_requested;
     double                                       load_factor = 0; // of the current state
     static constexpr bool                        geometrically_nonlinear = true;
     bool                                         mixed       = false;
