@@ -5,6 +5,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgp.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
@@ -33,6 +34,36 @@
 namespace compliant
 {
   using namespace dealii;
+
+  namespace
+  {
+    // A displacement function (dim components) seen with the mixed element's extra pressure
+    // component, which it leaves at zero.
+    template <int dim>
+    class ExtendedFunction : public Function<dim>
+    {
+    public:
+      ExtendedFunction(const Function<dim> &displacement, const unsigned int n_components)
+        : Function<dim>(n_components)
+        , displacement(displacement)
+      {}
+      double value(const Point<dim> &p, const unsigned int component) const override
+      {
+        return component < displacement.n_components ? displacement.value(p, component) : 0.0;
+      }
+      void vector_value(const Point<dim> &p, Vector<double> &values) const override
+      {
+        Vector<double> u(displacement.n_components);
+        displacement.vector_value(p, u);
+        values = 0;
+        for (unsigned int c = 0; c < u.size(); ++c)
+          values[c] = u[c];
+      }
+
+    private:
+      const Function<dim> &displacement;
+    };
+  } // namespace
 
   template <int dim>
   LinearElasticProblem<dim>::LinearElasticProblem(const CaseParameters &parameters,
@@ -87,6 +118,17 @@ namespace compliant
     else if (!matrix_free_allowed)
       why_not = "this analysis needs the assembled stiffness matrix";
     solver_note.clear();
+    if (mixed)
+      {
+        // The u-p system is a symmetric saddle point: neither the matrix-free elasticity operator
+        // nor CG applies.
+        solver_method = "direct";
+        if (requested != "direct" && requested != "auto")
+          solver_note = requested + " requested, but the mixed u-p system is indefinite: using MUMPS (direct)";
+        else if (requested == "auto")
+          solver_note = "auto: MUMPS for the mixed u-p (saddle-point) system";
+        return;
+      }
     if (requested == "matrix-free")
       {
         solver_method = matrix_free_possible ? "matrix-free" : "cg-amg";
@@ -151,6 +193,18 @@ namespace compliant
       }
     else
       throw std::invalid_argument("mesh '" + parameters.mesh_file + "' mixes cell types");
+    mixed = parameters.formulation == "mixed";
+    if (mixed)
+      {
+        if (dim == 2 && parameters.model == "plane stress")
+          throw std::invalid_argument("Discretization/Formulation = mixed: plane stress does not lock "
+                                      "(the thickness strain takes up the volume change); use "
+                                      "displacement, or plane strain or 3d");
+        if (!triangulation.all_reference_cells_are_hyper_cube() || degree < 2)
+          throw std::invalid_argument("Discretization/Formulation = mixed needs quadrilaterals or "
+                                      "hexahedra and Element degree 2 or 3 (Q2-P1, Q3-P2)");
+        fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim, FE_DGP<dim>(degree - 1), 1);
+      }
 
     materials           = assign_materials(parameters.materials, geometry.material_ids,
                                            parameters.unit_system);
@@ -184,18 +238,25 @@ namespace compliant
                                                           const bool homogeneous) const
   {
     DoFTools::make_hanging_node_constraints(dofs, constraints);
-    const Functions::ZeroFunction<dim> zero(dim);
+    // Functions of the displacement only; a mixed element's pressure is never constrained.
+    const unsigned int                 n_components = dofs.get_fe().n_components();
+    const Functions::ZeroFunction<dim> zero(n_components);
+    std::vector<bool>                  displacement_only(n_components, false);
+    std::fill(displacement_only.begin(), displacement_only.begin() + dim, true);
+    const ComponentMask displacement_mask(displacement_only);
     // First condition wins on shared edges/corners: clamped, then displacement, then rotation.
     for (const auto &[name, id] : boundary_conditions.clamped)
-      VectorTools::interpolate_boundary_values(*mapping, dofs, id, zero, constraints);
+      VectorTools::interpolate_boundary_values(*mapping, dofs, id, zero, constraints, displacement_mask);
     for (const auto &d : boundary_conditions.displacements)
       {
-        FunctionParser<dim> field(dim);
+        FunctionParser<dim> field(n_components);
+        auto                expressions = d.expressions;
+        expressions.resize(n_components, "0");
         try
           {
-            field.initialize(dim == 2 ? "x,y" : "x,y,z", d.expressions,
+            field.initialize(dim == 2 ? "x,y" : "x,y,z", expressions,
                              parameters.geometry_parameters);
-            Vector<double> probe(dim);
+            Vector<double> probe(n_components);
             field.vector_value(Point<dim>(), probe); // muparser reports syntax errors here
           }
         catch (const std::exception &)
@@ -208,15 +269,20 @@ namespace compliant
         VectorTools::interpolate_boundary_values(*mapping, dofs, d.boundary_id,
                                                  homogeneous ? static_cast<const Function<dim> &>(zero) :
                                                                field,
-                                                 constraints, ComponentMask(d.mask));
+                                                 constraints, [&] {
+                                                   std::vector<bool> mask = d.mask;
+                                                   mask.resize(n_components, false);
+                                                   return ComponentMask(mask);
+                                                 }());
       }
     for (const auto &r : boundary_conditions.rotations)
       {
         const RigidRotation<dim> rotation(r.angle, r.center, r.axis);
+        const ExtendedFunction<dim> padded(rotation, n_components);
         VectorTools::interpolate_boundary_values(*mapping, dofs, r.boundary_id,
                                                  homogeneous ? static_cast<const Function<dim> &>(zero) :
-                                                               rotation,
-                                                 constraints);
+                                                               padded,
+                                                 constraints, displacement_mask);
       }
   }
 
@@ -331,6 +397,8 @@ namespace compliant
     Vector<double>                   cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<SymmetricTensor<2, dim>> eps(n);
+    std::vector<double>                  divergence(n), pressure_value(n);
+    const FEValuesExtractors::Scalar     pressure(mixed ? dim : 0);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -346,9 +414,25 @@ namespace compliant
               if (with_matrix)
                 for (unsigned int i = 0; i < n; ++i)
                   eps[i] = fe_values[u].symmetric_gradient(i, q);
+              if (with_matrix && mixed)
+                {
+                  // (2 mu eps(u), eps(v)) - (p, div v) - (q, div u) - (p q) / lambda
+                  const double mu = material.shear_modulus(), lambda = material.lame_lambda();
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      divergence[i]     = fe_values[u].divergence(i, q);
+                      pressure_value[i] = fe_values[pressure].value(i, q);
+                    }
+                  for (unsigned int i = 0; i < n; ++i)
+                    for (unsigned int j = 0; j <= i; ++j)
+                      cell_matrix(i, j) += (2 * mu * (eps[i] * eps[j]) - divergence[i] * pressure_value[j] -
+                                            pressure_value[i] * divergence[j] -
+                                            pressure_value[i] * pressure_value[j] / lambda) *
+                                           JxW;
+                }
               for (unsigned int i = 0; i < n; ++i)
                 {
-                  if (with_matrix)
+                  if (with_matrix && !mixed)
                     {
                       double     sigma_zz;
                       const auto sigma_i = stress(eps[i], material, sigma_zz);
@@ -515,18 +599,27 @@ namespace compliant
 
   template <int dim>
   SymmetricTensor<2, dim> LinearElasticProblem<dim>::cauchy_stress(const Tensor<2, dim> &grad_u,
-                                                                   const Material &material, double,
-                                                                   double &sigma_zz) const
+                                                                   const Material &material,
+                                                                   const double    pressure,
+                                                                   double         &sigma_zz) const
   {
-    return stress(symmetrize(grad_u), material, sigma_zz);
+    if (!mixed)
+      return stress(symmetrize(grad_u), material, sigma_zz);
+    // sigma = 2 mu eps - p I; in plane strain eps_zz = 0, so sigma_zz = -p.
+    sigma_zz = dim == 2 ? -pressure : 0;
+    return 2 * material.shear_modulus() * symmetrize(grad_u) - pressure * unit_symmetric_tensor<dim>();
   }
 
   template <int dim>
   double LinearElasticProblem<dim>::energy_density(const Tensor<2, dim> &grad_u,
-                                                   const Material       &material) const
+                                                   const Material       &material,
+                                                   const double          pressure) const
   {
     double     sigma_zz;
     const auto strain = symmetrize(grad_u);
+    if (mixed) // 0.5 (2 mu eps : eps + p^2 / lambda), with div u = -p / lambda weakly
+      return 0.5 * (2 * material.shear_modulus() * (strain * strain) +
+                    pressure * pressure / material.lame_lambda());
     return 0.5 * (stress(strain, material, sigma_zz) * strain);
   }
 
@@ -535,23 +628,26 @@ namespace compliant
   {
     // The system matrix has the Dirichlet rows condensed away, so f_int is assembled afresh.
     PETScWrappers::MPI::Vector residual(locally_owned_dofs, communicator);
-    FEValues<dim> fe_values(*mapping, *fe, *quadrature, update_gradients | update_JxW_values);
+    FEValues<dim> fe_values(*mapping, *fe, *quadrature, update_values | update_gradients | update_JxW_values);
     const FEValuesExtractors::Vector     u(0);
     const unsigned int                   n = fe->n_dofs_per_cell();
     Vector<double>                       cell_vector(n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, dim>> strain(fe_values.n_quadrature_points);
+    std::vector<Tensor<2, dim>>          grad(fe_values.n_quadrature_points);
+    std::vector<double>                  p_values(fe_values.n_quadrature_points, 0.0);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[u].get_function_symmetric_gradients(solution, strain);
+          fe_values[u].get_function_gradients(solution, grad);
+          if (mixed)
+            fe_values[FEValuesExtractors::Scalar(dim)].get_function_values(solution, p_values);
           const Material &material = materials.at(cell->material_id());
           cell_vector              = 0;
           for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
             {
               double     sigma_zz;
-              const auto sigma = stress(strain[q], material, sigma_zz);
+              const auto sigma = cauchy_stress(grad[q], material, p_values[q], sigma_zz);
               for (unsigned int i = 0; i < n; ++i)
                 cell_vector(i) +=
                   (sigma * fe_values[u].symmetric_gradient(i, q)) * fe_values.JxW(q) * thickness;

@@ -71,7 +71,9 @@ namespace compliant
     dealii::SymmetricTensor<2, dim> cauchy_stress(const dealii::Tensor<2, dim> &grad_u,
                                                   const Material &material, double pressure,
                                                   double &sigma_zz) const;
-    double energy_density(const dealii::Tensor<2, dim> &grad_u, const Material &material) const;
+    // Strain energy density; the pressure enters in the mixed formulation (0.5 sigma : eps).
+    double energy_density(const dealii::Tensor<2, dim> &grad_u, const Material &material,
+                          double pressure = 0) const;
     // f_int(u) - f_ext without constraints: nonzero only where supports act, the reactions.
     dealii::PETScWrappers::MPI::Vector reaction_forces() const;
 
@@ -93,6 +95,9 @@ namespace compliant
     std::map<int, Material>                     materials;
     BoundaryConditions<dim>                     boundary_conditions;
     double                                      thickness; // 1 in 3D
+    // Discretization/Formulation = mixed: u-p with a discontinuous pressure, sigma = 2 mu eps - p I,
+    // div u + p / lambda = 0 weakly (the pressure is the last component).
+    bool                                        mixed = false;
     // The quantities' interface shared with the finite-strain problem.
     static constexpr bool   geometrically_nonlinear = false;
     static constexpr double load_factor             = 1;

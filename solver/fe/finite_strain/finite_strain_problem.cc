@@ -877,7 +877,7 @@ namespace compliant
 
   template <int dim>
   double FiniteStrainProblem<dim>::energy_density(const Tensor<2, dim> &grad_u,
-                                                  const Material       &material) const
+                                                  const Material       &material, double) const
   {
     const HyperelasticLaw law(settings.law, material, settings.mooney_rivlin_ratio);
     return material_response(law, green_lagrange(grad_u), 0.0).energy;

@@ -90,7 +90,8 @@ namespace compliant
                                                   const Material &material, double pressure,
                                                   double &sigma_zz) const;
     double von_mises(const dealii::SymmetricTensor<2, dim> &stress, double sigma_zz) const;
-    double energy_density(const dealii::Tensor<2, dim> &grad_u, const Material &material) const;
+    double energy_density(const dealii::Tensor<2, dim> &grad_u, const Material &material,
+                          double pressure = 0) const; // W(F): the pressure is not needed
 
     // Returns to an earlier converged state (a step the analysis rejects after the fact).
     void restore(const dealii::PETScWrappers::MPI::Vector &state, double state_load_factor)

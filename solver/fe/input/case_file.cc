@@ -54,6 +54,12 @@ namespace compliant
                         "Polynomial degree of the displacement elements (1 to 3).");
       prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 8),
                         "Uniform refinements of the gmsh mesh before solving.");
+      prm.declare_entry("Formulation", "displacement", Patterns::Selection("displacement|mixed"),
+                        "Linear static analyses. mixed: displacement Q_k with a discontinuous "
+                        "pressure P_(k-1) (Q2-P1 at degree 2), free of volumetric locking for "
+                        "nearly incompressible materials (printed TPU, nu near 0.5); plane strain "
+                        "and 3D, quadrilaterals/hexahedra, degree 2 or 3, solved by MUMPS. "
+                        "Finite strain has its own Finite strain/Formulation.");
       prm.declare_entry("Mesh partition", "auto", Patterns::Selection("auto|shared|distributed"),
                         "How the mesh is spread over MPI ranks. shared: every rank holds the "
                         "whole mesh and owns a METIS part. distributed: each rank holds only its "
@@ -409,6 +415,7 @@ namespace compliant
     p.element_degree     = prm.get_integer("Element degree");
     p.global_refinements = prm.get_integer("Global refinements");
     p.mesh_partition     = prm.get("Mesh partition");
+    p.formulation        = prm.get("Formulation");
     prm.leave_subsection();
 
     prm.enter_subsection("Material");

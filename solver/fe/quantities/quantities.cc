@@ -334,9 +334,9 @@ namespace compliant
       FEValues<dim> sample_values(*problem.mapping, *problem.fe, sample,
                                   update_values | update_gradients | update_quadrature_points);
       FEValues<dim> fe_values(*problem.mapping, *problem.fe, *problem.quadrature,
-                              update_gradients | update_JxW_values);
+                              update_values | update_gradients | update_JxW_values);
       std::vector<Tensor<2, dim>> grad(sample.size()), grad_q(problem.quadrature->size());
-      std::vector<double>         p_values(sample.size(), 0.0);
+      std::vector<double>         p_values(sample.size(), 0.0), p_q(problem.quadrature->size(), 0.0);
       double     max_vm = -1, energy = 0, safety = std::numeric_limits<double>::max();
       Point<dim> max_location;
       for (const auto &cell : problem.dof_handler.active_cell_iterators())
@@ -359,8 +359,10 @@ namespace compliant
               }
             fe_values.reinit(cell);
             fe_values[u].get_function_gradients(problem.solution, grad_q);
+            if (has_pressure)
+              fe_values[pressure].get_function_values(problem.solution, p_q);
             for (unsigned int k = 0; k < grad_q.size(); ++k)
-              energy += problem.energy_density(grad_q[k], material) * fe_values.JxW(k) *
+              energy += problem.energy_density(grad_q[k], material, p_q[k]) * fe_values.JxW(k) *
                         problem.thickness;
           }
       const auto [global_max, location] = global_peak(max_vm, max_location, comm);
