@@ -106,6 +106,12 @@ solver_case("misspelled section", [scratch_file("section.prm", base.replace("sub
             ["section.prm", "Materal"])
 solver_case("misspelled parameter", [scratch_file("param.prm", base.replace("set Clamped = base", "set Clampd = base"))],
             ["param.prm", "Clampd"])
+# Found by fuzzing the case reader: deal.II does not check a value starting with '{' against its
+# pattern, and reading it as a number then failed with a stack dump.
+solver_case("geometry parameter in braces", [scratch_file("brace.prm", base.replace("set t = 1", "set t = {1"))],
+            ["brace.prm", "line", "t", "{"])
+solver_case("element degree in braces", [scratch_file("brace2.prm", base.replace("set Element degree = 2", "set Element degree = {2"))],
+            ["brace2.prm", "Element degree", "{"])
 solver_case("unterminated subsection", [scratch_file("open.prm", base + "\nsubsection Loads\n")], ["open.prm"])
 solver_case("CRLF line endings work", [scratch_file("crlf.prm", base.replace("\n", "\r\n")), "--check"], [], code=0)
 solver_case("UTF-8 BOM works", [scratch_file("bom.prm", "\ufeff" + base), "--check"], [], code=0)
