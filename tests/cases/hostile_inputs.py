@@ -112,6 +112,13 @@ solver_case("geometry parameter in braces", [scratch_file("brace.prm", base.repl
             ["brace.prm", "line", "t", "{"])
 solver_case("element degree in braces", [scratch_file("brace2.prm", base.replace("set Element degree = 2", "set Element degree = {2"))],
             ["brace2.prm", "Element degree", "{"])
+# Found by fuzzing the case reader: a NUL in the mesh file name (the C library stops at it, gmsh
+# does not) sent gmsh into endless recursive merging; names gmsh would guess a format for, too.
+solver_case("NUL in the mesh file name", [scratch_file("nul.prm", "set Model = plane stress\nsubsection Geometry\n"
+                                                      "  set Mesh file = cantilever_2d.geo\x00\x02\nend\n")],
+            ["nul.prm", "Mesh file", "control character"])
+solver_case("mesh file neither .geo nor .msh", [hinge, "--set", "Geometry/Mesh file=" + hinge],
+            ["Mesh file", ".geo", ".msh"])
 solver_case("unterminated subsection", [scratch_file("open.prm", base + "\nsubsection Loads\n")], ["open.prm"])
 solver_case("CRLF line endings work", [scratch_file("crlf.prm", base.replace("\n", "\r\n")), "--check"], [], code=0)
 solver_case("UTF-8 BOM works", [scratch_file("bom.prm", "\ufeff" + base), "--check"], [], code=0)

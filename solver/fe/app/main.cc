@@ -6,6 +6,7 @@
 
 #include <boost/serialization/map.hpp>
 #include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <closed_forms/registry.h>
 
@@ -37,6 +38,25 @@ namespace
               << closed_forms::documentation();
   }
 
+  void report_curved_boundaries(const CurvedEntities &curved)
+  {
+    if (!curved.exact.empty())
+      {
+        const char *names[] = {"circle", "cylinder", "sphere"};
+        unsigned int counts[3] = {0, 0, 0};
+        for (const auto &boundary : curved.exact)
+          ++counts[boundary.shape];
+        std::cout << "Curved boundaries:";
+        for (unsigned int s = 0; s < 3; ++s)
+          if (counts[s] > 0)
+            std::cout << " " << counts[s] << " " << names[s] << (counts[s] > 1 ? "s" : "");
+        std::cout << " follow the geometry; cells mapped at the element degree\n";
+      }
+    for (const auto &entity : curved.straightened)
+      std::cout << "Curved boundaries: " << entity
+                << " is neither circle, cylinder nor sphere: its faces stay straight\n";
+  }
+
   // Meshing happens on rank 0; every rank gets the same mesh text, or the same error.
   MeshedGeometry mesh_on_rank_zero(const CaseParameters &p, MPI_Comm comm)
   {
@@ -46,6 +66,9 @@ namespace
       try
         {
           geometry = mesh_geometry(p.mesh_file, p.geometry_parameters);
+          if (!p.curved_boundaries)
+            geometry.curved = {};
+          report_curved_boundaries(geometry.curved);
         }
       catch (const std::exception &e)
         {
@@ -59,6 +82,7 @@ namespace
     geometry.boundary_ids = dealii::Utilities::MPI::broadcast(comm, geometry.boundary_ids, 0);
     geometry.material_ids = dealii::Utilities::MPI::broadcast(comm, geometry.material_ids, 0);
     geometry.n_cells      = dealii::Utilities::MPI::broadcast(comm, geometry.n_cells, 0);
+    geometry.curved       = dealii::Utilities::MPI::broadcast(comm, geometry.curved, 0);
     return geometry;
   }
 

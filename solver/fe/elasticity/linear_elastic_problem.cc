@@ -21,6 +21,7 @@
 #include "fast_solver/p_multigrid_solver.h"
 #include "linear_algebra/rigid_body_modes.h"
 #include "elasticity/von_mises.h"
+#include "mesh/curved_simplex_mapping.h"
 #include "mesh/mesh_reader.h"
 #include "linear_algebra/petsc_linear_solver.h"
 
@@ -177,7 +178,7 @@ namespace compliant
     if (triangulation.all_reference_cells_are_hyper_cube())
       {
         fe              = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
-        mapping         = std::make_unique<MappingQ<dim>>(1);
+        mapping         = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
         quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
         face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
       }
@@ -187,7 +188,7 @@ namespace compliant
           throw std::invalid_argument("Discretization/Element degree: triangles and tetrahedra "
                                       "support degree 1 or 2, not " + std::to_string(degree));
         fe              = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
-        mapping         = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
+        mapping         = std::make_unique<CurvedSimplexMapping<dim>>(mapping_degree(geometry.curved, degree));
         quadrature      = std::make_unique<QGaussSimplex<dim>>(degree + 1);
         face_quadrature = std::make_unique<QGaussSimplex<dim - 1>>(degree + 1);
       }

@@ -155,7 +155,7 @@ namespace compliant
       fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim, FE_DGP<dim>(degree - 1), 1);
     else
       fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
-    mapping         = std::make_unique<MappingQ<dim>>(1);
+    mapping         = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
     quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
     face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
 

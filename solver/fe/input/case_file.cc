@@ -3,6 +3,7 @@
 #include "analyses/analysis.h"
 #include "input/spec_list.h"
 
+#include <cstdio>
 #include <fstream>
 #include <cmath>
 #include <sstream>
@@ -60,6 +61,13 @@ namespace compliant
                         "nearly incompressible materials (printed TPU, nu near 0.5); plane strain "
                         "and 3D, quadrilaterals/hexahedra, degree 2 or 3, solved by MUMPS. "
                         "Finite strain has its own Finite strain/Formulation.");
+      prm.declare_entry("Curved boundaries", "true", Patterns::Bool(),
+                        "true: boundaries the gmsh geometry draws as circles (2D) or cylinders "
+                        "and spheres (3D) stay on that shape: refinement puts new vertices on it "
+                        "and the cells touching it are mapped with the element degree "
+                        "(isoparametric), so quadratic elements keep their order on holes and "
+                        "notches. Other curved shapes (splines, ellipses) and .msh meshes are "
+                        "straight-sided, as the log says. false: every cell straight-sided.");
       prm.declare_entry("Mesh partition", "auto", Patterns::Selection("auto|shared|distributed"),
                         "How the mesh is spread over MPI ranks. shared: every rank holds the "
                         "whole mesh and owns a METIS part. distributed: each rank holds only its "
@@ -254,6 +262,27 @@ namespace compliant
   {
     std::string describe_parameter_error(const std::string &what, const std::string &path);
 
+    // gmsh guesses the format of a name it does not know by extension, and a name with a control
+    // character (a NUL cuts it short for the C library, not for gmsh) sent it into endless merging:
+    // only plain .geo and .msh names go to gmsh. Found by fuzzing the case reader.
+    void refuse_unreadable_mesh_name(const std::string &name, const std::string &file)
+    {
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (static_cast<unsigned char>(name[i]) < 0x20 || name[i] == 0x7f)
+          {
+            char byte[8];
+            std::snprintf(byte, sizeof(byte), "0x%02x", static_cast<unsigned char>(name[i]));
+            throw InputError("case file '" + file + "', Geometry/Mesh file: control character " + byte +
+                             " at position " + std::to_string(i + 1) + " of the name; expected a .geo or .msh file name");
+          }
+      const auto ends_with = [&](const std::string &suffix) {
+        return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+      };
+      if (!name.empty() && !ends_with(".geo") && !ends_with(".msh"))
+        throw InputError("case file '" + file + "', Geometry/Mesh file: '" + name +
+                         "' is neither a .geo nor a .msh file");
+    }
+
     // Applies "A/B/Name=value" to the handler; names the override on failure.
     void apply_override(ParameterHandler &prm, const std::string &text, bool ignore_undeclared)
     {
@@ -393,8 +422,10 @@ namespace compliant
         for (const auto &o : command_line.overrides)
           apply_override(first_pass, o, true);
         first_pass.enter_subsection("Geometry");
-        parsed.mesh_file = resolve_mesh_file(first_pass.get("Mesh file"), file);
+        const std::string mesh_name = first_pass.get("Mesh file");
         first_pass.leave_subsection();
+        refuse_unreadable_mesh_name(mesh_name, file);
+        parsed.mesh_file = resolve_mesh_file(mesh_name, file);
         if (parsed.mesh_file.empty())
           throw InputError("case file '" + file +
                            "': Geometry/Mesh file is empty; expected a .geo or .msh file");
@@ -440,6 +471,7 @@ namespace compliant
     p.element_degree     = prm.get_integer("Element degree");
     p.global_refinements = prm.get_integer("Global refinements");
     p.mesh_partition     = prm.get("Mesh partition");
+    p.curved_boundaries  = prm.get_bool("Curved boundaries");
     p.formulation        = prm.get("Formulation");
     prm.leave_subsection();
 

@@ -32,6 +32,7 @@ namespace compliant
     unsigned int element_degree     = 2;
     unsigned int global_refinements = 0;
     std::string  mesh_partition     = "auto"; // auto, shared, distributed
+    bool         curved_boundaries  = true;   // circles, cylinders, spheres follow the geometry
     std::string  formulation        = "displacement"; // linear analyses: displacement or mixed
     // Local refinements after the global ones, one set of refine flags (per active cell) per
     // cycle: set by the model ladder's adaptive rungs, never read from the case file.

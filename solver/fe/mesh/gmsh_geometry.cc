@@ -46,6 +46,14 @@ namespace compliant
 
     void open_or_throw(const std::string &file)
     {
+      // gmsh guesses the format of other names, and a control character in the name sent it into
+      // endless recursive merging (found by fuzzing): plain .geo and .msh names only.
+      for (const char c : file)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+          throw std::runtime_error("the mesh file name contains a control character; expected a .geo or .msh file");
+      const std::string extension = file.size() > 4 ? file.substr(file.size() - 4) : "";
+      if (extension != ".geo" && extension != ".msh")
+        throw std::runtime_error("'" + file + "' is neither a .geo nor a .msh file");
       if (!file_exists(file))
         throw std::runtime_error("geometry file '" + file + "' does not exist");
       try
@@ -197,6 +205,8 @@ namespace compliant
       throw std::runtime_error("geometry file '" + file +
                                "' mixes element types; use all quadrilaterals/hexahedra "
                                "(Recombine + Transfinite) or all triangles/tetrahedra");
+
+    result.curved = find_curved_entities(result.dimension);
 
     // Gmsh 2.2 ASCII through a private temporary file; the text is what the ranks share.
     char tmp_name[] = "/tmp/compliant-mesh-XXXXXX.msh";

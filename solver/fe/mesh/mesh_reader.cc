@@ -7,8 +7,10 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 
+#include "mesh/curved_manifolds.h"
 #include "mesh/memory_estimate.h"
 
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -17,6 +19,22 @@ namespace compliant
 {
   namespace
   {
+    // Curved faces on the coarse mesh as read, before any refinement puts vertices on them.
+    template <int dim>
+    void curve_boundaries(dealii::Triangulation<dim> &triangulation, const MeshedGeometry &geometry,
+                          const unsigned int element_degree)
+    {
+      if (geometry.curved.exact.empty())
+        return;
+      mark_curved_faces(triangulation, geometry.curved.exact);
+      attach_curved_manifolds(triangulation, geometry.curved.exact);
+      const unsigned int n_straight = straighten_folding_faces(triangulation, element_degree);
+      if (n_straight > 0 && dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cout << "Curved boundaries: " << n_straight
+                  << " faces kept straight: following the arc would fold their thin cells "
+                     "(a finer gmsh mesh there curves them)\n";
+    }
+
     // Rank 0 reads and refines the whole mesh, METIS cuts it, and each rank receives only its
     // part with one layer of ghost cells; the serial mesh is gone before the solve.
     template <int dim>
@@ -38,6 +56,7 @@ namespace compliant
             grid_in.attach_triangulation(serial);
             std::istringstream in(geometry.msh_text);
             grid_in.read_msh(in);
+            curve_boundaries(serial, geometry, element_degree);
             serial.refine_global(global_refinements);
           },
           [](dealii::Triangulation<dim> &serial, const MPI_Comm &comm, const unsigned int) {
@@ -46,6 +65,7 @@ namespace compliant
           },
           communicator, dealii::Utilities::MPI::n_mpi_processes(communicator));
       triangulation.create_triangulation(description);
+      attach_curved_manifolds(triangulation, geometry.curved.exact);
     }
   } // namespace
 
@@ -63,6 +83,7 @@ namespace compliant
     grid_in.attach_triangulation(triangulation);
     std::istringstream in(geometry.msh_text);
     grid_in.read_msh(in);
+    curve_boundaries(triangulation, geometry, element_degree);
     const auto *parallel =
       dynamic_cast<const dealii::parallel::TriangulationBase<dim> *>(&triangulation);
     refuse_refinement_beyond_memory(triangulation.n_active_cells(), dim, global_refinements, element_degree,

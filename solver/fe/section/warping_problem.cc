@@ -16,6 +16,9 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include "mesh/curved_manifolds.h"
+#include "mesh/curved_simplex_mapping.h"
+
 #include <sstream>
 #include <stdexcept>
 
@@ -39,13 +42,18 @@ namespace compliant::section
     grid_in.attach_triangulation(triangulation);
     std::istringstream in(geometry.msh_text);
     grid_in.read_msh(in);
+    // Circular arcs of the section (fillets, round bars) stay round under refinement and are
+    // mapped at the element degree.
+    mark_curved_faces(triangulation, geometry.curved.exact);
+    attach_curved_manifolds(triangulation, geometry.curved.exact);
+    straighten_folding_faces(triangulation, degree);
     triangulation.refine_global(refinements);
+    const unsigned int geometry_degree = mapping_degree(geometry.curved, degree);
 
-    // Straight-sided cells (affine or bilinear): curved boundaries are polygons of the gmsh nodes.
     if (triangulation.all_reference_cells_are_hyper_cube())
       {
         fe         = std::make_unique<FE_Q<2>>(degree);
-        mapping    = std::make_unique<MappingQ<2>>(1);
+        mapping    = std::make_unique<MappingQ<2>>(geometry_degree);
         quadrature = std::make_unique<QGauss<2>>(degree + 1);
       }
     else if (triangulation.all_reference_cells_are_simplex())
@@ -56,7 +64,7 @@ namespace compliant::section
                                       "(deal.II 9.4), got " + std::to_string(degree) +
                                       "; use quadrilaterals for degree 3");
         fe         = std::make_unique<FE_SimplexP<2>>(degree);
-        mapping    = std::make_unique<MappingFE<2>>(FE_SimplexP<2>(1));
+        mapping    = std::make_unique<CurvedSimplexMapping<2>>(geometry_degree);
         quadrature = std::make_unique<QGaussSimplex<2>>(degree + 1);
       }
     else
