@@ -39,7 +39,9 @@ namespace compliant
     {
       prm.declare_entry("Mesh file", "",
                         Patterns::Anything(),
-                        "A parametric gmsh .geo file (meshed at run time) or a ready .msh file. "
+                        "A parametric gmsh .geo file (meshed at run time), a ready .msh file, or an "
+                        "Abaqus/CalculiX .inp mesh (element and node sets and surfaces are the "
+                        "group names; see README, Geometry). "
                         "Relative paths are looked up next to the case file, then in meshes/.");
       prm.enter_subsection("Parameters");
       for (const auto &p : geometry_parameters)
@@ -273,14 +275,14 @@ namespace compliant
             char byte[8];
             std::snprintf(byte, sizeof(byte), "0x%02x", static_cast<unsigned char>(name[i]));
             throw InputError("case file '" + file + "', Geometry/Mesh file: control character " + byte +
-                             " at position " + std::to_string(i + 1) + " of the name; expected a .geo or .msh file name");
+                             " at position " + std::to_string(i + 1) + " of the name; expected a .geo, .msh or .inp file name");
           }
       const auto ends_with = [&](const std::string &suffix) {
         return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
       };
-      if (!name.empty() && !ends_with(".geo") && !ends_with(".msh"))
+      if (!name.empty() && !ends_with(".geo") && !ends_with(".msh") && !ends_with(".inp"))
         throw InputError("case file '" + file + "', Geometry/Mesh file: '" + name +
-                         "' is neither a .geo nor a .msh file");
+                         "' is neither a .geo, .msh nor .inp (Abaqus/CalculiX) file");
     }
 
     // Applies "A/B/Name=value" to the handler; names the override on failure.

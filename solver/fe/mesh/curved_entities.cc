@@ -13,17 +13,18 @@ namespace compliant
   {
     using Point = std::array<double, 3>;
 
-    Point  minus(const Point &a, const Point &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+    Point  minus(const Point &a, const Point &b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
     double dot(const Point &a, const Point &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
     double norm(const Point &a) { return std::sqrt(dot(a, a)); }
     Point  cross(const Point &a, const Point &b)
     {
-      return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
     }
 
-    // Geometry from gmsh is exact to round-off: a shape whose samples miss it by more than this
-    // (relative to its radius) is something else (an ellipse, a spline).
-    constexpr double shape_tolerance = 1e-7;
+    // Geometry from gmsh holds to about 1e-8 of its size (built-in kernel extrusions drift that
+    // much from their plane): a shape whose samples miss it by more than 1e-6 (relative to its
+    // radius or size) is something else (an ellipse, a spline); flatter than that is straight.
+    constexpr double shape_tolerance = 1e-6;
 
     // Solves the n x n system a x = b (row-major) by elimination with partial pivoting; false if
     // it is singular to round-off.
@@ -65,7 +66,7 @@ namespace compliant
     bool fit_sphere(const std::vector<Point> &points, const unsigned int n_coordinates,
                     Point &centre, double &radius)
     {
-      Point mean = {0, 0, 0};
+      Point mean = {{0, 0, 0}};
       for (const auto &p : points)
         for (unsigned int d = 0; d < 3; ++d)
           mean[d] += p[d] / points.size();
@@ -121,7 +122,7 @@ namespace compliant
     {
       std::vector<Point> points(xyz.size() / 3);
       for (std::size_t i = 0; i < points.size(); ++i)
-        points[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+        points[i] = {{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}};
       return points;
     }
 
@@ -157,7 +158,7 @@ namespace compliant
       double      off_line  = 0;
       for (const auto &p : points)
         off_line = std::max(off_line, norm(cross(minus(p, points.front()), direction)) / norm(direction));
-      if (off_line <= 1e-10 * size)
+      if (off_line <= 1e-6 * size)
         return -1;
       Point  centre;
       double radius;
@@ -191,11 +192,19 @@ namespace compliant
       if (!(size > 0) || normals.size() != points.size())
         return -1;
 
-      // Planar: one normal, and every sample in its plane.
-      bool planar = norm(normals.front()) > 0;
-      for (std::size_t i = 0; i < points.size() && planar; ++i)
-        planar = norm(cross(normals[i], normals.front())) <= 1e-8 * norm(normals[i]) * norm(normals.front()) &&
-                 std::abs(dot(minus(points[i], points.front()), normals.front())) <= 1e-10 * size * norm(normals.front());
+      // Parametrizations may collapse an edge (a triangular patch), where the normal vanishes:
+      // the longest normal is the reference, and vanishing ones take no part.
+      double longest = 0;
+      Point  reference{{0, 0, 0}};
+      for (const auto &normal : normals)
+        if (norm(normal) > longest)
+          longest = norm(normal), reference = normal;
+      if (!(longest > 0))
+        return -2;
+      // Planar: every sample in the plane through the first one across the reference normal.
+      bool planar = true;
+      for (const auto &p : points)
+        planar = planar && std::abs(dot(minus(p, points.front()), reference)) <= 1e-6 * size * longest;
       if (planar)
         return -1;
 
@@ -211,22 +220,23 @@ namespace compliant
 
       // A cylinder: every normal is perpendicular to the axis, and the samples projected on a
       // plane across the axis lie on a circle.
-      Point  axis    = {0, 0, 0};
+      Point  axis    = {{0, 0, 0}};
       double largest = 0;
       for (const auto &normal : normals)
         {
-          const Point candidate = cross(normals.front(), normal);
+          const Point candidate = cross(reference, normal);
           if (norm(candidate) > largest)
             largest = norm(candidate), axis = candidate;
         }
-      if (!(largest > 1e-6))
+      if (!(largest > 1e-6 * longest * longest))
         return -2;
+      const double axis_norm = norm(axis);
       for (auto &a : axis)
-        a /= largest;
+        a /= axis_norm;
       for (const auto &normal : normals)
-        if (std::abs(dot(normal, axis)) > shape_tolerance * norm(normal))
+        if (norm(normal) > 1e-6 * longest && std::abs(dot(normal, axis)) > shape_tolerance * norm(normal))
           return -2;
-      const Point helper = std::abs(axis[0]) < 0.9 ? Point{1, 0, 0} : Point{0, 1, 0};
+      const Point helper = std::abs(axis[0]) < 0.9 ? Point{{1, 0, 0}} : Point{{0, 1, 0}};
       Point       e1     = cross(axis, helper);
       const double e1_norm = norm(e1);
       for (auto &e : e1)
@@ -234,7 +244,7 @@ namespace compliant
       const Point        e2 = cross(axis, e1);
       std::vector<Point> projected;
       for (const auto &p : points)
-        projected.push_back({dot(p, e1), dot(p, e2), 0});
+        projected.push_back({{dot(p, e1), dot(p, e2), 0}});
       Point plane_centre;
       if (!fit_sphere(projected, 2, plane_centre, radius))
         return -2;

@@ -1,5 +1,7 @@
 #include "mesh/gmsh_geometry.h"
 
+#include "mesh/abaqus_mesh.h"
+
 #include <gmsh.h>
 
 #include <cstdio>
@@ -44,6 +46,13 @@ namespace compliant
       return in.good();
     }
 
+    bool has_extension(const std::string &file, const std::string &extension)
+    {
+      return file.size() > extension.size() &&
+             file.compare(file.size() - extension.size(), extension.size(), extension) == 0;
+    }
+    bool is_geo(const std::string &file) { return has_extension(file, ".geo"); }
+
     void open_or_throw(const std::string &file)
     {
       // gmsh guesses the format of other names, and a control character in the name sent it into
@@ -51,9 +60,8 @@ namespace compliant
       for (const char c : file)
         if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
           throw std::runtime_error("the mesh file name contains a control character; expected a .geo or .msh file");
-      const std::string extension = file.size() > 4 ? file.substr(file.size() - 4) : "";
-      if (extension != ".geo" && extension != ".msh")
-        throw std::runtime_error("'" + file + "' is neither a .geo nor a .msh file");
+      if (!is_geo(file) && !has_extension(file, ".msh"))
+        throw std::runtime_error("'" + file + "' is neither a .geo, .msh nor .inp file");
       if (!file_exists(file))
         throw std::runtime_error("geometry file '" + file + "' does not exist");
       try
@@ -123,11 +131,15 @@ namespace compliant
 
   std::vector<GeometryParameter> read_geometry_parameters(const std::string &file)
   {
+    if (has_extension(file, ".inp"))
+      return {}; // a ready mesh: no parameters
     return with_gmsh_errors(file, [&] { return read_geometry_parameters_unguarded(file); });
   }
 
   MeshedGeometry mesh_geometry(const std::string &file, const std::map<std::string, double> &parameters)
   {
+    if (has_extension(file, ".inp"))
+      return read_abaqus_mesh(file);
     return with_gmsh_errors(file, [&] { return mesh_geometry_unguarded(file, parameters); });
   }
 
@@ -164,8 +176,7 @@ namespace compliant
     if (result.dimension < 2)
       throw std::runtime_error("geometry file '" + file + "' has no surface or volume");
 
-    const bool is_geo = file.size() > 4 && file.substr(file.size() - 4) == ".geo";
-    if (is_geo)
+    if (is_geo(file))
       {
         try
           {
