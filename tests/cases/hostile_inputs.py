@@ -168,8 +168,9 @@ solver_case("target error negative", [hinge, S, "Target/Relative error=-1"], ["R
 solver_case("modal: 0 modes", [modal, S, "Modal/Number of modes=0"], ["modes"])
 solver_case("mixed formulation in plane stress", [hinge, S, "Discretization/Formulation=mixed"],
             ["Formulation", "plane stress"])
-solver_case("mixed formulation in a modal analysis", [modal, S, "Discretization/Formulation=mixed"],
-            ["Formulation", "modal"])
+solver_case("mixed formulation in a linkage analysis",
+            [os.path.join(root, "cases", "jansen", "leg_structure.prm"), S, "Discretization/Formulation=mixed"],
+            ["Formulation", "linkage"])
 solver_case("mixed formulation at degree 1", [cantilever_3d, S, "Discretization/Formulation=mixed", S,
                                               "Discretization/Element degree=1"], ["Formulation", "degree"])
 solver_case("modal on a distributed mesh", [modal, S, "Discretization/Mesh partition=distributed"],

@@ -23,7 +23,7 @@ namespace compliant
       dealii::Timer timer;
       if (p.formulation == "mixed")
         throw InputError("case file '" + p.case_file + "': Discretization/Formulation = mixed is for "
-                         "linear static analyses; the linkage analysis uses displacement elements");
+                         "linear static and modal analyses; the linkage analysis uses displacement elements");
       LinearElasticProblem<dim>         problem(p, context.geometry, comm,
                                                 choose_mesh_partition(context, p, "the linkage analysis (pins tie DoFs of any two bodies)"));
       dealii::AffineConstraints<double> constraints;

@@ -103,9 +103,6 @@ namespace compliant
         std::cout << "note: a modal analysis reports frequencies, effective masses and Derived "
                      "quantities; ignored here: "
                   << ignored << "\n";
-      if (p.formulation == "mixed")
-        throw InputError("case file '" + p.case_file + "': Discretization/Formulation = mixed is for "
-                         "linear static analyses; the modal analysis uses displacement elements");
       LinearElasticProblem<dim> problem(p, context.geometry, comm,
                                         choose_mesh_partition(context, p, "the modal analysis (constraints gathered on every rank)"));
       // Supports hold still in a vibration: the constraints without their prescribed values.

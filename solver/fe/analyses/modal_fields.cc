@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace compliant
@@ -18,9 +19,10 @@ namespace compliant
     double largest_magnitude(const LinearElasticProblem<dim>   &problem,
                              const PETScWrappers::MPI::Vector &ghosted)
     {
-      const Quadrature<dim> support(problem.fe->get_unit_support_points());
+      // The displacement element's nodes (a mixed element's pressure has none).
+      const Quadrature<dim> support(problem.fe->base_element(0).get_unit_support_points());
       FEValues<dim>         fe_values(*problem.mapping, *problem.fe, support, update_values);
-      std::vector<Vector<double>> values(support.size(), Vector<double>(dim));
+      std::vector<Vector<double>> values(support.size(), Vector<double>(problem.fe->n_components()));
       double                      largest = 0;
       for (const auto &cell : problem.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -28,7 +30,12 @@ namespace compliant
             fe_values.reinit(cell);
             fe_values.get_function_values(ghosted, values);
             for (const auto &v : values)
-              largest = std::max(largest, v.l2_norm());
+              {
+                double squared = 0;
+                for (unsigned int d = 0; d < dim; ++d)
+                  squared += v[d] * v[d];
+                largest = std::max(largest, std::sqrt(squared));
+              }
           }
       return Utilities::MPI::max(largest, problem.communicator);
     }
@@ -41,8 +48,11 @@ namespace compliant
   {
     DataOut<dim> data_out;
     data_out.attach_dof_handler(problem.dof_handler);
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+    // Displacement, and with the mixed formulation the pressure of the mode (a scalar).
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
       dim, DataComponentInterpretation::component_is_part_of_vector);
+    if (problem.fe->n_components() > dim)
+      interpretation.push_back(DataComponentInterpretation::component_is_scalar);
     std::vector<PETScWrappers::MPI::Vector> scaled;
     scaled.reserve(modes.size()); // DataOut keeps references
     for (unsigned int m = 0; m < modes.size(); ++m)
@@ -55,9 +65,10 @@ namespace compliant
         if (largest > 0)
           owned /= largest;
         scaled.back() = owned;
-        data_out.add_data_vector(scaled.back(),
-                                 std::vector<std::string>(dim, "mode_" + std::to_string(m + 1)),
-                                 DataOut<dim>::type_dof_data, interpretation);
+        std::vector<std::string> names(dim, "mode_" + std::to_string(m + 1));
+        if (problem.fe->n_components() > dim)
+          names.push_back("mode_" + std::to_string(m + 1) + "_pressure");
+        data_out.add_data_vector(scaled.back(), names, DataOut<dim>::type_dof_data, interpretation);
       }
     return write_field_files(data_out, problem, directory);
   }

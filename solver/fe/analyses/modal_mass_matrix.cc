@@ -33,6 +33,8 @@ namespace compliant
               for (unsigned int i = 0; i < n; ++i)
                 {
                   const unsigned int ci = problem.fe->system_to_component_index(i).first;
+                  if (ci >= dim)
+                    continue; // the pressure of a mixed element carries no mass
                   for (unsigned int j = 0; j < n; ++j)
                     if (problem.fe->system_to_component_index(j).first == ci)
                       cell_matrix(i, j) += fe_values.shape_value(i, q) *
@@ -70,7 +72,7 @@ namespace compliant
                                          const unsigned int               component)
   {
     PETScWrappers::MPI::Vector r(problem.locally_owned_dofs, problem.communicator);
-    ComponentMask              mask(dim, false);
+    ComponentMask              mask(problem.fe->n_components(), false);
     mask.set(component, true);
     const IndexSet component_dofs = DoFTools::extract_dofs(problem.dof_handler, mask);
     for (const auto i : component_dofs)

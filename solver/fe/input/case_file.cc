@@ -58,7 +58,7 @@ namespace compliant
       prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 8),
                         "Uniform refinements of the gmsh mesh before solving.");
       prm.declare_entry("Formulation", "displacement", Patterns::Selection("displacement|mixed"),
-                        "Linear static analyses. mixed: displacement Q_k with a discontinuous "
+                        "Linear static and modal analyses. mixed: displacement Q_k with a discontinuous "
                         "pressure P_(k-1) (Q2-P1 at degree 2), free of volumetric locking for "
                         "nearly incompressible materials (printed TPU, nu near 0.5); plane strain "
                         "and 3D, quadrilaterals/hexahedra, degree 2 or 3, solved by MUMPS. "
