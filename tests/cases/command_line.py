@@ -88,7 +88,7 @@ bad("bad expression", [case, "--set", "Boundary conditions/Rotation=drive: degre
 bad("point outside the mesh", [case, "--set", "Quantities/Points=far: 1000 0"], ["far", "outside"])
 bad("plane stress with the mixed formulation", [case, "--set", "Analysis=nonlinear static", "--set", "Model=plane stress",
     "--set", "Finite strain/Formulation=mixed"], ["Formulation", "plane stress"])
-bad("plane stress with a follower pressure", [case, "--set", "Analysis=nonlinear static", "--set", "Model=plane stress",
-    "--set", "Finite strain/Follower pressure=drive: 1"], ["Follower pressure", "plane stress"])
+bad("follower pressure on an unknown boundary", [case, "--set", "Analysis=nonlinear static",
+    "--set", "Finite strain/Follower pressure=nowhere: 1"], ["Follower pressure", "nowhere"])
 bad("missing case file", [os.path.join(root, "cases", "no_such_case.prm")], ["no_such_case.prm"])
 sys.exit(1 if failed else 0)

@@ -181,9 +181,6 @@ namespace compliant
         follower_pressures[boundary_id_of(item.name, geometry.boundary_ids,
                                           "Finite strain/Follower pressure")] = {item.fields[0].value};
       }
-    if (plane_stress && !follower_pressures.empty())
-      throw std::invalid_argument("Finite strain/Follower pressure: not available in plane stress "
-                                  "(the loaded area would follow the thickness stretch); use 3d");
     for (const auto &[id, expressions] : boundary_conditions.traction_fields)
       make_parser<dim>(expressions, parameters.geometry_parameters, "Loads/Traction");
     for (const auto &[id, expressions] : follower_pressures)
@@ -424,10 +421,13 @@ namespace compliant
                         t[d] += field_value[d];
                     }
                   t *= lambda;
-                  // Follower pressure on the deformed surface: t dA = -p cof(F) N dA0.
-                  Tensor<2, dim> F, F_inv_T, cof;
-                  double         p = 0;
-                  const auto     N = fe_face_values.normal_vector(q);
+                  // Follower pressure on the deformed surface: t dA = -p cof(F) N dA0. In plane
+                  // stress the loaded area also follows the thickness stretch lambda_3 =
+                  // sqrt(1 + 2 E33), E33 from S33 = 0 at this point: t dA = -p lambda_3 cof(F) N dA0.
+                  Tensor<2, dim>          F, F_inv_T, cof;
+                  SymmetricTensor<2, dim> dlambda3_dE;
+                  double                  p = 0, lambda3 = 1;
+                  const auto              N = fe_face_values.normal_vector(q);
                   if (follower != pressure_fields.end())
                     {
                       follower->second->vector_value(fe_face_values.quadrature_point(q), pressure_value);
@@ -435,7 +435,19 @@ namespace compliant
                       F       = unit_symmetric_tensor<dim>() + face_grad_u[q];
                       F_inv_T = transpose(invert(F));
                       cof     = determinant(F) * F_inv_T;
-                      t -= p * (cof * N);
+                      if (plane_stress)
+                        {
+                          const auto response = material_response(
+                            law, 0.5 * (symmetrize(transpose(F) * F) - unit_symmetric_tensor<dim>()), 0.0);
+                          if (!std::isfinite(response.E33) || !(1 + 2 * response.E33 > 0))
+                            {
+                              ++inverted; // no plane-stress state here: cut the step back
+                              continue;
+                            }
+                          lambda3     = std::sqrt(1 + 2 * response.E33);
+                          dlambda3_dE = response.dE33_dE / lambda3;
+                        }
+                      t -= p * lambda3 * (cof * N);
                     }
                   for (unsigned int i = 0; i < n; ++i)
                     {
@@ -453,7 +465,10 @@ namespace compliant
                           const auto dF   = fe_face_values[displacement].gradient(j, q);
                           const auto dcof = determinant(F) * (scalar_product(F_inv_T, dF) * F_inv_T -
                                                               F_inv_T * transpose(dF) * F_inv_T);
-                          cell_matrix(i, j) += p * (phi_i * (dcof * N)) * dA;
+                          double dlambda3 = 0;
+                          if (plane_stress)
+                            dlambda3 = dlambda3_dE * symmetrize(transpose(F) * dF);
+                          cell_matrix(i, j) += p * (phi_i * (lambda3 * (dcof * N) + dlambda3 * (cof * N))) * dA;
                         }
                     }
                 }

@@ -163,6 +163,10 @@ namespace compliant
                                                                   r3.tangent[2][2][c][d] /
                                                                   r3.tangent[2][2][2][2];
         }
+    // S33(E, E33) = 0 holds along the solution: dE33 = -(C_33ab dE_ab) / C_3333.
+    for (unsigned int a = 0; a < 2; ++a)
+      for (unsigned int b = a; b < 2; ++b)
+        r.dE33_dE[a][b] = -r3.tangent[2][2][a][b] / r3.tangent[2][2][2][2];
     r.energy = r3.energy;
     r.log_J  = r3.log_J;
     r.E33    = E33;

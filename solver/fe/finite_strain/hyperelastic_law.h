@@ -29,6 +29,7 @@ namespace compliant
     double                          energy   = 0;
     double                          S33      = 0; // out-of-plane S in plane strain
     double                          E33      = 0; // out-of-plane strain in plane stress
+    dealii::SymmetricTensor<2, dim> dE33_dE;      // its derivative (plane stress): dE33 = dE33_dE : dE
     double                          log_J    = 0;
   };
 
