@@ -150,6 +150,17 @@ solver_case("geometry parameter negative", [hinge, S, "Geometry/Parameters/t=-1"
 solver_case("geometry gmsh cannot build", [hinge, S, "Geometry/Parameters/l=0"], ["flexure_hinge_2d.geo", "gmsh"])
 solver_case("rotation angle nan", [hinge, S, "Boundary conditions/Rotation=drive: degrees=nan, center=l/2 0"], ["Rotation"])
 solver_case("traction inf", [hinge, S, "Loads/Traction=drive: 0 inf"], ["Traction"])
+# Rigid boundaries (Boundary conditions/Rigid): touching a support, malformed, infinite, wrong analysis.
+rigid_case = os.path.join(root, "cases", "verification", "rigid_end_moment.prm")
+solver_case("rigid boundary touching the clamp", [rigid_case, S, "Boundary conditions/Rigid=top: moment=1"],
+            ["Rigid", "top", "shares nodes"])
+solver_case("rigid moment with two numbers in 2D", [rigid_case, S, "Boundary conditions/Rigid=right: moment=1 2"],
+            ["Rigid", "moment", "one number"])
+solver_case("rigid force infinite", [rigid_case, S, "Boundary conditions/Rigid=right: force=0 1/0"],
+            ["Rigid", "finite"])
+solver_case("rigid unknown field", [rigid_case, S, "Boundary conditions/Rigid=right: torque=1"],
+            ["Rigid", "torque", "expected moment"])
+solver_case("rigid boundary in a modal analysis", [rigid_case, S, "Analysis=modal"], ["Rigid", "modal"])
 solver_case("traction syntax error", [hinge, S, "Loads/Traction=drive: 0 -1/(x-"], ["Traction"])
 solver_case("traction NaN expression", [hinge, S, "Loads/Traction=drive: 0 1/(x-x)"], ["Traction", "not finite"])
 solver_case("traction with one component", [hinge, S, "Loads/Traction=drive: 1"], ["Traction"])

@@ -57,7 +57,7 @@ namespace compliant
                         "stiffness (LDL^T inertia): when equilibrium turns unstable (limit point "
                         "or bifurcation passed) the run stops and reports the load, instead of "
                         "following an unstable path. Off automatically with follower pressure "
-                        "(non-symmetric tangent).");
+                        "and with rigid boundaries in 3D (non-symmetric tangent).");
       prm.declare_entry("Residual tolerance", "1e-9", Patterns::Double(0, 1),
                         "Newton converges when the residual is below this fraction of the "
                         "internal force norm.");
@@ -83,8 +83,11 @@ namespace compliant
       settings.follower_pressure     = prm.get("Follower pressure");
       settings.max_newton_iterations = prm.get_integer("Newton iterations");
       settings.residual_tolerance    = prm.get_double("Residual tolerance");
-      const bool stability_check     = prm.get_bool("Stability check") &&
-                                   settings.follower_pressure.empty();
+      // A moment on a rigid boundary in 3D makes the tangent unsymmetric too (a space-fixed
+      // moment is not conservative under finite rotations).
+      const bool stability_check = prm.get_bool("Stability check") &&
+                                   settings.follower_pressure.empty() &&
+                                   !(dim == 3 && !dealii::Utilities::trim(p.rigid).empty());
       stepping.initial_step          = prm.get_double("Initial step");
       stepping.minimum_step          = prm.get_double("Minimum step");
       stepping.maximum_step          = prm.get_double("Maximum step");

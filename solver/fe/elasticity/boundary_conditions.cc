@@ -149,6 +149,58 @@ namespace compliant
         }
     }
     {
+      const std::string where = "Boundary conditions/Rigid";
+      for (const auto &item : parse_spec_list(p.rigid, where))
+        {
+          claim(item.name, where);
+          RigidBoundaryLoad<dim> r;
+          r.boundary    = item.name;
+          r.boundary_id = boundary_id_of(item.name, boundaries, where);
+          for (const auto &f : item.fields)
+            if (f.key != "moment" && f.key != "force" && f.key != "center")
+              throw std::invalid_argument(where + ": unknown field '" + f.key + "' of '" +
+                                          item.name + "'; expected moment, force, center");
+          if (item.has("force"))
+            {
+              const auto f = evaluate_coordinates(item.get("force"), p.geometry_parameters,
+                                                  where + " force of '" + item.name + "'");
+              if (!(f.size() == (unsigned)dim || (dim == 2 && f.size() == 3 && f[2] == 0)))
+                throw std::invalid_argument(where + ": force of '" + item.name + "' needs " +
+                                            std::to_string(dim) + " components");
+              for (unsigned int d = 0; d < dim; ++d)
+                r.force[d] = f[d];
+            }
+          if (item.has("moment"))
+            {
+              const auto m = evaluate_coordinates(item.get("moment"), p.geometry_parameters,
+                                                  where + " moment of '" + item.name + "'");
+              if (dim == 2 && m.size() == 1)
+                r.moment[2] = m[0];
+              else if (dim == 3 && m.size() == 3)
+                r.moment = dealii::Tensor<1, 3>({m[0], m[1], m[2]});
+              else
+                throw std::invalid_argument(where + ": moment of '" + item.name + "' needs " +
+                                            (dim == 2 ? "one number (about z)" : "3 components"));
+            }
+          for (unsigned int d = 0; d < 3; ++d)
+            if (!std::isfinite(r.moment[d]) || (d < dim && !std::isfinite(r.force[d])))
+              throw std::invalid_argument(where + ": force and moment of '" + item.name +
+                                          "' must be finite numbers");
+          if (item.has("center"))
+            {
+              const auto c = evaluate_coordinates(item.get("center"), p.geometry_parameters,
+                                                  where + " center of '" + item.name + "'");
+              if (!(c.size() == (unsigned)dim || (c.size() == 3 && dim == 2)))
+                throw std::invalid_argument(where + ": center of '" + item.name + "' needs " +
+                                            std::to_string(dim) + " coordinates");
+              r.has_center = true;
+              for (unsigned int d = 0; d < c.size(); ++d)
+                r.center[d] = c[d];
+            }
+          bc.rigid.push_back(r);
+        }
+    }
+    {
       const std::string where = "Loads/Traction";
       for (const auto &item : parse_spec_list(p.traction, where))
         {

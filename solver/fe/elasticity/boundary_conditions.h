@@ -33,12 +33,25 @@ namespace compliant
     bool                     is_constant = true;
   };
 
+  // A boundary moving as a rigid body under a dead force and moment (Boundary conditions/Rigid).
+  template <int dim>
+  struct RigidBoundaryLoad
+  {
+    int                    boundary_id;
+    std::string            boundary;
+    dealii::Tensor<1, dim> force;
+    dealii::Tensor<1, 3>   moment; // 2D: z only
+    bool                   has_center = false;
+    dealii::Point<3>       center;
+  };
+
   template <int dim>
   struct BoundaryConditions
   {
     std::vector<std::pair<std::string, int>>     clamped;
     std::vector<PrescribedDisplacement<dim>>     displacements;
     std::vector<PrescribedRotation<dim>>         rotations;
+    std::vector<RigidBoundaryLoad<dim>>          rigid;
     std::map<int, dealii::Tensor<1, dim>>        tractions;     // per boundary id
     // Tractions given as expressions of x, y, z and geometry parameters, per boundary id.
     std::map<int, std::vector<std::string>>      traction_fields;

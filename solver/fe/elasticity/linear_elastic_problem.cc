@@ -100,10 +100,13 @@ namespace compliant
   template <int dim>
   void LinearElasticProblem<dim>::allocate_matrix()
   {
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    // Rows of a rigid boundary's masters get entries from every cell on that boundary.
+    IndexSet rows = locally_relevant_dofs;
+    for (const auto &rigid : rigid_boundaries)
+      rows.add_indices(rigid.master_candidates(dof_handler.n_dofs()));
+    DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator,
-                                               locally_relevant_dofs);
+    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator, rows);
     system_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
   }
 
@@ -112,10 +115,12 @@ namespace compliant
   {
     const std::string &requested = parameters.solver_method;
     const bool hexahedra = triangulation.all_reference_cells_are_hyper_cube();
-    const bool matrix_free_possible = hexahedra && matrix_free_allowed;
+    const bool matrix_free_possible = hexahedra && matrix_free_allowed && rigid_boundaries.empty();
     std::string why_not;
     if (!hexahedra)
       why_not = "the matrix-free operator needs quadrilateral/hexahedral cells";
+    else if (!rigid_boundaries.empty())
+      why_not = "a rigid boundary ties its nodes together (the multigrid levels cannot)";
     else if (!matrix_free_allowed)
       why_not = "this analysis needs the assembled stiffness matrix";
     solver_note.clear();
@@ -219,6 +224,9 @@ namespace compliant
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     constraints.close();
     hanging_node_constraints.copy_from(constraints);
+    rigid_boundaries.clear();
+    for (const auto &load : boundary_conditions.rigid)
+      rigid_boundaries.emplace_back(load, dof_handler, *mapping, hanging_node_constraints, communicator);
     system_rhs.reinit(locally_owned_dofs, communicator);
     external_forces.reinit(locally_owned_dofs, communicator);
     solution.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
@@ -230,6 +238,8 @@ namespace compliant
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
     add_support_constraints(dof_handler, constraints, false);
+    for (const auto &rigid : rigid_boundaries)
+      rigid.add_constraints(constraints); // refuses nodes a support holds
     constraints.close();
   }
 
@@ -483,6 +493,11 @@ namespace compliant
           else
             constraints.distribute_local_to_global(cell_rhs, dofs, system_rhs);
         }
+    for (const auto &rigid : rigid_boundaries)
+      {
+        rigid.add_load(1, &constraints, system_rhs);
+        rigid.add_load(1, nullptr, external_forces);
+      }
     if (with_matrix)
       system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);

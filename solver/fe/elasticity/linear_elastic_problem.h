@@ -12,6 +12,7 @@
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
+#include "constraints/rigid_boundary.h"
 #include "elasticity/boundary_conditions.h"
 #include "elasticity/material.h"
 #include "input/case_file.h"
@@ -94,6 +95,8 @@ namespace compliant
     dealii::AffineConstraints<double>           hanging_node_constraints; // adaptive meshes only
     std::map<int, Material>                     materials;
     BoundaryConditions<dim>                     boundary_conditions;
+    // Boundary conditions/Rigid, linearised about the reference configuration.
+    std::vector<RigidBoundary<dim>>             rigid_boundaries;
     double                                      thickness; // 1 in 3D
     // Discretization/Formulation = mixed: u-p with a discontinuous pressure, sigma = 2 mu eps - p I,
     // div u + p / lambda = 0 weakly (the pressure is the last component).

@@ -195,19 +195,27 @@ namespace compliant
     DoFTools::make_hanging_node_constraints(dof_handler, hanging_node_constraints);
     hanging_node_constraints.close();
 
+    rigid_boundaries.clear();
+    for (const auto &load : boundary_conditions.rigid)
+      rigid_boundaries.emplace_back(load, dof_handler, *mapping, hanging_node_constraints, communicator);
+
     const PETScWrappers::MPI::Vector zero(locally_owned_dofs, locally_relevant_dofs, communicator);
-    const auto             constraints = make_constraints(0, true, zero);
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    const auto constraints = make_constraints(0, true, zero, true); // refuses supported rigid nodes
+    // Rows of a rigid boundary's masters get entries from every cell on that boundary.
+    IndexSet rows = locally_relevant_dofs;
+    for (const auto &rigid : rigid_boundaries)
+      rows.add_indices(rigid.master_candidates(dof_handler.n_dofs()));
+    DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator,
-                                               locally_relevant_dofs);
+    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator, rows);
     tangent.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
   }
 
   template <int dim>
   AffineConstraints<double>
   FiniteStrainProblem<dim>::make_constraints(const double lambda, const bool homogeneous,
-                                             const PETScWrappers::MPI::Vector &u) const
+                                             const PETScWrappers::MPI::Vector &u,
+                                             const bool for_sparsity) const
   {
     AffineConstraints<double> constraints;
     constraints.reinit(locally_relevant_dofs);
@@ -270,6 +278,12 @@ namespace compliant
                                                  PaddedRotation(rotation, fe->n_components()),
                                                  constraints, displacement);
       }
+    for (auto &rigid : rigid_boundaries)
+      {
+        if (!for_sparsity)
+          rigid.linearize(&u);
+        rigid.add_constraints(constraints, for_sparsity);
+      }
     // Newton solves for the correction: the Dirichlet value minus the current displacement.
     // (Hanging-node lines stay homogeneous: the displacement satisfies them at every step.)
     for (const auto &line : constraints.get_lines())
@@ -318,6 +332,14 @@ namespace compliant
     for (const auto &[id, e] : follower_pressures)
       pressure_fields[id] = make_parser<dim>(e, parameters.geometry_parameters, "Follower pressure");
     Vector<double> field_value(dim), pressure_value(1);
+
+    // Forces on rigid boundaries (unconstrained), for their geometric stiffness.
+    const bool rigid_condensed = constraints != nullptr && constraints != &hanging_node_constraints &&
+                                 constraints->get_local_lines().size() > 0;
+    const bool rigid_stiffness = with_matrix && rigid_condensed && !rigid_boundaries.empty();
+    PETScWrappers::MPI::Vector boundary_forces;
+    if (rigid_stiffness)
+      boundary_forces.reinit(locally_owned_dofs, communicator);
 
     unsigned int inverted = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -477,6 +499,8 @@ namespace compliant
           cell->get_dof_indices(dofs);
           if (full_residual != nullptr)
             hanging_node_constraints.distribute_local_to_global(cell_rhs, dofs, *full_residual);
+          if (rigid_stiffness)
+            hanging_node_constraints.distribute_local_to_global(cell_rhs, dofs, boundary_forces);
           if (constraints != nullptr && with_matrix)
             constraints->distribute_local_to_global(cell_matrix, cell_rhs, dofs, tangent, residual);
           else if (constraints != nullptr)
@@ -484,6 +508,20 @@ namespace compliant
           else
             residual.add(dofs, cell_rhs);
         }
+    // Loads of rigid boundaries: condensed onto the masters where the constraints hold the rigid
+    // lines (those from make_constraints, reinitialised on the relevant DoFs), else nodal.
+    if (rigid_stiffness)
+      {
+        boundary_forces.compress(VectorOperation::add);
+        for (const auto &rigid : rigid_boundaries)
+          rigid.add_geometric_stiffness(boundary_forces, tangent);
+      }
+    for (const auto &rigid : rigid_boundaries)
+      {
+        rigid.add_load(lambda, rigid_condensed ? constraints : nullptr, residual);
+        if (full_residual != nullptr)
+          rigid.add_load(lambda, nullptr, *full_residual);
+      }
     if (with_matrix)
       tangent.compress(VectorOperation::add);
     residual.compress(VectorOperation::add);
@@ -621,7 +659,7 @@ namespace compliant
             for (unsigned int cut = 0; cut < settings.line_search_steps; ++cut)
                 {
                   PETScWrappers::MPI::Vector trial = u;
-                  trial.add(alpha, du);
+                  add_correction(trial, alpha, du);
                   double trial_norm;
                   try
                     {
@@ -636,7 +674,7 @@ namespace compliant
                   alpha /= 2;
                   ++report.line_search_cuts;
                 }
-            u.add(alpha, du);
+            add_correction(u, alpha, du);
             // At the round-off floor of the residual the correction tells convergence.
             if (it > 0 && alpha * du.l2_norm() <= 1e-10 * u.l2_norm())
               {
@@ -659,6 +697,19 @@ namespace compliant
 
 
   template <int dim>
+  void FiniteStrainProblem<dim>::add_correction(PETScWrappers::MPI::Vector &u, const double alpha,
+                                                const PETScWrappers::MPI::Vector &du) const
+  {
+    u.add(alpha, du);
+    if (rigid_boundaries.empty())
+      return;
+    for (const auto &rigid : rigid_boundaries)
+      rigid.move(du, alpha, u);
+    // Hanging nodes on a rigid boundary follow its exact motion too.
+    hanging_node_constraints.distribute(u);
+  }
+
+  template <int dim>
   bool FiniteStrainProblem<dim>::matrix_free_tangent() const
   {
     const std::string &method = parameters.solver_method;
@@ -667,7 +718,8 @@ namespace compliant
     // models (2D elastica, 2k DoFs: 0.4 s of solves against 0.8 s).
     const bool wanted = method == "matrix-free" ||
                         (method == "auto" && dim == 3 && dof_handler.n_dofs() >= auto_matrix_free_dofs);
-    return wanted && !iterative_failed && !mixed && follower_pressures.empty() && fe->degree >= 2;
+    return wanted && !iterative_failed && !mixed && follower_pressures.empty() &&
+           rigid_boundaries.empty() && fe->degree >= 2;
   }
 
   template <int dim>
@@ -681,6 +733,8 @@ namespace compliant
       why = "the mixed u-p tangent is indefinite";
     else if (!follower_pressures.empty())
       why = "a follower pressure makes the tangent unsymmetric";
+    else if (!rigid_boundaries.empty())
+      why = "a rigid boundary ties its nodes together (the multigrid levels cannot)";
     else if (fe->degree < 2 && method != "cg-amg")
       why = "degree 1 has no p-multigrid levels";
     else if (method == "auto")

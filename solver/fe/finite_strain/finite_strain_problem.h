@@ -14,6 +14,7 @@
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
+#include "constraints/rigid_boundary.h"
 #include "elasticity/boundary_conditions.h"
 #include "elasticity/material.h"
 #include "finite_strain/hyperelastic_law.h"
@@ -154,6 +155,8 @@ namespace compliant
     bool                                         plane_stress = false;
 
     dealii::PETScWrappers::MPI::Vector solution; // ghosted, converged state
+    // Boundary conditions/Rigid; linearised at the state of the latest make_constraints.
+    mutable std::vector<RigidBoundary<dim>> rigid_boundaries;
     unsigned int                       total_linear_solves = 0;
     double                             tangent_assembly_seconds = 0, linear_solve_seconds = 0;
     // Of linear_solve_seconds: the matrix-free tangent's state on every level, diagonals,
@@ -173,8 +176,14 @@ namespace compliant
     dealii::AffineConstraints<double> hanging_node_constraints; // adaptive meshes only
     // Dirichlet values at load factor `lambda` minus the current displacement (first Newton
     // iteration), or homogeneous (later iterations).
+    // Rigid boundaries are linearised at u; for_sparsity: their lines name every DoF that may
+    // become a master (the matrix's pattern).
     dealii::AffineConstraints<double> make_constraints(double lambda, bool homogeneous,
-                                                       const dealii::PETScWrappers::MPI::Vector &u) const;
+                                                       const dealii::PETScWrappers::MPI::Vector &u,
+                                                       bool for_sparsity = false) const;
+    // u + alpha du, with every rigid boundary put on its exact rigid motion.
+    void add_correction(dealii::PETScWrappers::MPI::Vector &u, double alpha,
+                        const dealii::PETScWrappers::MPI::Vector &du) const;
     // Assembles the residual f_int - lambda f_ext (and the tangent if asked) at state u.
     // full_residual, if given, also gets it without the Dirichlet conditions (hanging nodes
     // condensed): the internal force scale of the convergence test, from the same pass.

@@ -107,6 +107,19 @@ namespace compliant
                         "center=x y z, axis=0 0 1'. In 2D the axis is z. The exact rotation is "
                         "imposed (not its small-angle form). Coordinates may be expressions of geometry "
                         "parameters: center=l/2 0.");
+      prm.declare_entry("Rigid", "", Patterns::Anything(),
+                        "Boundaries that move as rigid bodies loaded by a force and a moment, "
+                        "their translation and rotation unknowns (a torque drive, a pure end "
+                        "moment): 'right: moment=M (2D, about z) or moment=Mx My Mz (3D), "
+                        "force=Fx Fy [Fz], center=x y [z]'. The moment acts about the center "
+                        "(default: the centroid of the boundary's nodes), which moves with the "
+                        "boundary; force and moment keep their direction (dead loads), are totals "
+                        "over the thickness in 2D and scale with the load factor; numbers or expressions of "
+                        "geometry parameters. Exact rigid "
+                        "motion at finite strain (any rotation). Gives rigid_rotation_<name>_<z|x y "
+                        "z> (radians) and rigid_displacement_<name>_<x|y|z> (of the center). "
+                        "Linear and nonlinear static analyses; a rigid boundary shares no node "
+                        "with a supported boundary.");
     }
     prm.leave_subsection();
 
@@ -491,7 +504,12 @@ namespace compliant
     p.clamped      = prm.get("Clamped");
     p.displacement = prm.get("Displacement");
     p.rotation     = prm.get("Rotation");
+    p.rigid        = prm.get("Rigid");
     prm.leave_subsection();
+    if (!trim(p.rigid).empty() && p.analysis != "linear static" && p.analysis != "nonlinear static")
+      throw InputError("case file '" + p.case_file + "', Boundary conditions/Rigid: rigid "
+                       "boundaries are available in linear static and nonlinear static analyses, "
+                       "not in " + p.analysis);
 
     prm.enter_subsection("Loads");
     p.traction    = prm.get("Traction");

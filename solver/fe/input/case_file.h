@@ -42,7 +42,7 @@ namespace compliant
     std::string unit_system;
     std::string materials;
 
-    std::string clamped, displacement, rotation;
+    std::string clamped, displacement, rotation, rigid;
     std::string traction, total_force, body_force, gravity;
     std::string pressure; // 'boundary: p' on the undeformed normal (linear analyses)
 

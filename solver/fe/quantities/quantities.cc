@@ -325,6 +325,20 @@ namespace compliant
             q["rotation_" + name + "_" + axis_name[d]] = tw(3 + d);
       }
 
+    // Rigid boundaries: the exact rotation (radians) and the displacement of the moment centre.
+    for (const auto &rigid : problem.rigid_boundaries)
+      {
+        const auto  motion = rigid.motion(problem.solution, problem.geometrically_nonlinear);
+        const auto &name   = rigid.load.boundary;
+        if (dim == 2)
+          q["rigid_rotation_" + name + "_z"] = motion.rotation[2];
+        else
+          for (unsigned int d = 0; d < 3; ++d)
+            q["rigid_rotation_" + name + "_" + axis_name[d]] = motion.rotation[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          q["rigid_displacement_" + name + "_" + axis_name[d]] = motion.displacement[d];
+      }
+
     // Peak von Mises over quadrature points and element nodes; strain energy.
     {
       const Quadrature<dim> sample = peak_sample_points(*problem.quadrature, *problem.fe);

@@ -1,0 +1,113 @@
+// A boundary that moves as a rigid body under a dead force and moment (Boundary conditions/Rigid),
+// its translation and rotation unknowns: a torque drive or a pure end moment.
+//
+// Every DoF of the boundary follows dim (2D: 3, 3D: 6) master DoFs of the same boundary through a
+// linear multi-point constraint: the rigid motion linearised about the current position,
+// du = dU + dpsi x (x - x_c). A Newton correction therefore moves the boundary rigidly to first
+// order; move() then puts it on the exact rigid motion (rotation by Rodrigues' formula), so any
+// rotation (a cantilever rolled into a full circle) is reached without drift. The load enters as
+// nodal forces on a few DoFs whose resultant and moment about the centre are the given ones,
+// which is all a rigid boundary can feel. Linear analyses linearise once about the reference.
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include "elasticity/boundary_conditions.h"
+
+#include <vector>
+
+namespace compliant
+{
+  template <int dim>
+  class RigidBoundary
+  {
+  public:
+    static constexpr unsigned int n_motions = dim == 2 ? 3 : 6; // translations, then rotations
+
+    // Gathers the boundary's DoFs from every rank; DoFs constrained in `hanging` (hanging nodes
+    // of adaptive meshes) follow their masters and are left out. Collective. Throws
+    // std::invalid_argument if the boundary cannot carry a rigid motion (no nodes; in 3D, nodes
+    // on one line).
+    RigidBoundary(const RigidBoundaryLoad<dim> &load, const dealii::DoFHandler<dim> &dofs,
+                  const dealii::Mapping<dim> &mapping, const dealii::AffineConstraints<double> &hanging,
+                  MPI_Comm communicator);
+
+    // Linearises the rigid motion at the state u, which must be exactly rigid on this boundary
+    // (nullptr: the reference configuration), and chooses the master DoFs. Collective.
+    void linearize(const dealii::PETScWrappers::MPI::Vector *u);
+
+    // Adds slave = sum_m c_m master for every locally relevant DoF of the boundary but the
+    // masters. for_sparsity: every slave couples to every DoF a master could be chosen from
+    // (the pattern of a matrix whose masters may change with the rotation). Throws
+    // std::invalid_argument (collectively) if a DoF is already constrained by a support.
+    void add_constraints(dealii::AffineConstraints<double> &constraints, bool for_sparsity = false) const;
+
+    // The DoFs the constraints may name as masters: rows a sparsity pattern must hold.
+    dealii::IndexSet master_candidates(dealii::types::global_dof_index n_dofs) const;
+
+    // Adds scale * (force, moment) to rhs as nodal forces (through constraints if given).
+    // Every rank calls it; rank 0 adds. Needs rhs.compress(add) afterwards.
+    void add_load(double scale, const dealii::AffineConstraints<double> *constraints,
+                  dealii::PETScWrappers::MPI::Vector &rhs) const;
+
+    // Adds to the condensed tangent the change of the constraint's rotation columns with the
+    // rotation, weighted by the forces the body exerts on the boundary, f = -residual
+    // (residual = f_ext - f_int unconstrained, without this boundary's load): A_jk =
+    // sum_s r_j f_k - (f . r) delta_jk on the rotations, T^T A T on the masters. Without it
+    // Newton stalls in 3D, where the bending stresses couple the rotations. Unsymmetric in 3D
+    // (a space-fixed moment is not conservative). Collective; rank 0 adds, compress(add) after.
+    void add_geometric_stiffness(const dealii::PETScWrappers::MPI::Vector &residual,
+                                 dealii::PETScWrappers::MPI::SparseMatrix &matrix) const;
+
+    // u (owned entries) gets the exact rigid motion reached from the linearised state by the
+    // correction alpha * du (du satisfies the constraints). Collective; u needs no compress.
+    void move(const dealii::PETScWrappers::MPI::Vector &du, double alpha,
+              dealii::PETScWrappers::MPI::Vector &u) const;
+
+    struct Motion
+    {
+      dealii::Tensor<1, 3>   rotation;     // rotation vector, continued past pi from the previous state
+      dealii::Tensor<1, dim> displacement; // of the centre
+    };
+    // The rigid motion of the boundary in the state u. Collective.
+    Motion motion(const dealii::PETScWrappers::MPI::Vector &u, bool geometrically_nonlinear) const;
+
+    const RigidBoundaryLoad<dim> load;
+    dealii::Point<dim>           center; // reference position of the moment point
+
+  private:
+    struct BoundaryDof
+    {
+      dealii::types::global_dof_index index;
+      unsigned int                    component;
+      dealii::Point<dim>              point;
+    };
+    std::vector<BoundaryDof>  boundary_dofs;
+    std::vector<unsigned int> candidates; // all components of 2 (2D) or 3 (3D) spread-out nodes
+    double                    size = 1;   // largest distance of a candidate from the centre
+    MPI_Comm                  communicator;
+
+    // The linearisation: rotation and centre position of the state, masters, and the map from
+    // master values to (dU, dpsi).
+    dealii::Tensor<2, dim>     rotation;
+    dealii::Point<dim>         center_position;
+    std::vector<unsigned int>  masters; // into boundary_dofs
+    dealii::FullMatrix<double> master_to_motion;
+    mutable double             last_angle = 0; // 2D: to continue the angle past pi
+    mutable dealii::Tensor<1, 3> last_rotation;  // 3D: to continue the rotation vector past pi
+
+    // Row of d(u_i at x) / d(dU, dpsi) at the current position x_current - x_c = r.
+    std::vector<double> motion_row(unsigned int component, const dealii::Tensor<1, dim> &r) const;
+    // Owned values of v at the candidates, summed over the ranks.
+    std::vector<double> candidate_values(const dealii::PETScWrappers::MPI::Vector &v) const;
+    void                frame_from(const std::vector<double> &values,
+                                   dealii::Tensor<2, dim> &rotation, dealii::Point<dim> &center_position) const;
+  };
+} // namespace compliant

@@ -1,0 +1,95 @@
+#!/usr/bin/python3
+"""Checks of rigid boundaries (Boundary conditions/Rigid) that need more than one run.
+
+    rigid_boundary_checks.py linear_3d | small_load | ranks
+"""
+import math
+import os
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+cases = os.path.join(here, "..", "..", "cases")
+sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
+from study import run_case  # noqa: E402
+
+failed = []
+
+
+def check(ok, text):
+    print(("PASS  " if ok else "FAIL  ") + text)
+    if not ok:
+        failed.append(text)
+
+
+bar = os.path.join(cases, "verification", "cantilever_3d.prm")
+# 3D bar 1 x 1 x 10, nu = 0, clamped at x = 0, right end rigid.
+bar_sets = ["Analysis=linear static", "Geometry/Parameters/L=10", "Geometry/Parameters/H=1",
+            "Geometry/Parameters/W=1", "Geometry/Parameters/ny=2", "Geometry/Parameters/nz=2",
+            "Geometry/Parameters/nx=20", "Discretization/Element degree=2",
+            "Material/Materials=*: steel, E=1000, nu=0", "Boundary conditions/Clamped=left",
+            "Loads/Traction=", "Loads/Total force=", "Loads/Body force=", "Loads/Gravity=",
+            "Comparison/Checks=", "Quantities/Points=", "Quantities/Derived="]
+
+mode = sys.argv[1]
+if mode == "linear_3d":
+    # Pure bending about y and z at once is quadratic: Q2 gives Euler's rotations to round-off.
+    q = run_case(bar, bar_sets + ["Boundary conditions/Rigid=right: moment=0 0.5 1"])["quantities"]
+    EI = 1000 / 12
+    check(abs(q["rigid_rotation_right_z"] / (1 * 10 / EI) - 1) < 1e-9,
+          "theta_z = M_z L / E I: %.12g" % q["rigid_rotation_right_z"])
+    check(abs(q["rigid_rotation_right_y"] / (0.5 * 10 / EI) - 1) < 1e-9,
+          "theta_y = M_y L / E I: %.12g" % q["rigid_rotation_right_y"])
+    check(abs(q["rigid_displacement_right_y"] / (1 * 100 / (2 * EI)) - 1) < 1e-9,
+          "v = M_z L^2 / 2 E I: %.12g" % q["rigid_displacement_right_y"])
+    check(abs(q["rigid_rotation_right_x"]) < 1e-9, "no twist: %.3g" % q["rigid_rotation_right_x"])
+    check(abs(q["reaction_moment_left_z"] + 1) < 1e-9 and abs(q["reaction_moment_left_y"] + 0.5) < 1e-9,
+          "the clamp carries the moment")
+    # Torque on the rigid end against the same end turned by a prescribed rotation (another
+    # code path: Dirichlet values and the reaction moment): the twist that the torque T gives,
+    # prescribed, must need the moment T. The torsion problem is symmetric: the rigid end does
+    # not translate, which is what the prescribed rotation about the centre imposes.
+    # A small torque: the prescribed rotation is imposed exactly (not linearised), which moves
+    # the face inwards by theta^2 / 2 of its radius; at theta ~ 1e-4 that is 1e-8.
+    torque = run_case(bar, bar_sets + ["Boundary conditions/Rigid=right: moment=1e-3 0 0"])["quantities"]
+    twist = torque["rigid_rotation_right_x"]
+    drive = run_case(bar, bar_sets + ["Boundary conditions/Rotation=right: angle=%.17g, center=10 0 0, axis=1 0 0" % twist])["quantities"]
+    print("twist %.12g, moment needed %.12g" % (twist, drive["reaction_moment_right_x"]))
+    check(abs(drive["reaction_moment_right_x"] / 1e-3 - 1) < 1e-7,
+          "reciprocity: the torque's twist, prescribed, needs the torque (%.10g)" % drive["reaction_moment_right_x"])
+    check(abs(torque["rigid_displacement_right_y"]) < 1e-10 and abs(torque["rigid_displacement_right_z"]) < 1e-10,
+          "the twisted end does not translate")
+elif mode == "small_load":
+    # In the small-load limit the finite-strain rigid boundary is the linear one (moment and force).
+    case = os.path.join(cases, "verification", "rigid_end_moment.prm")
+    # theta ~ 1e-5: geometric terms of relative order 1e-5, except the axial displacement (2e-7),
+    # which the bending shortens by ~ theta^2 L / 3 ~ 1e-10 (measured 1.8e-4 of it).
+    sets = ["Boundary conditions/Rigid=right: moment=1e-4, force=2e-5 1e-5"]
+    linear = run_case(case, sets)["quantities"]
+    nonlinear = run_case(case, sets + ["Analysis=nonlinear static"])["quantities"]
+    for key in ("rigid_rotation_right_z", "rigid_displacement_right_y", "reaction_moment_left_z",
+                "reaction_force_left_y"):
+        a, b = linear[key], nonlinear[key]
+        print("%-28s linear %.10g  nonlinear %.10g" % (key, a, b))
+        check(abs(a - b) <= 1e-4 * abs(a), "%s agrees to 1e-4" % key)
+    # The axial displacement (2e-7) is shortened by the bending, 1/2 int v'^2 dx (3e-3 of it):
+    # the finite-strain answer must show that second-order term, to 1 %.
+    EI, M, P, L, n = 1000 / 12, 1e-4, 1e-5, 10, 10000
+    shortening = sum(((M * x + P * (L * x - x * x / 2)) / EI) ** 2 / 2 * L / n
+                     for x in ((i + 0.5) * L / n for i in range(n)))
+    measured = linear["rigid_displacement_right_x"] - nonlinear["rigid_displacement_right_x"]
+    print("bending shortening: beam %.6g, finite strain %.6g" % (shortening, measured))
+    check(abs(measured / shortening - 1) < 0.01, "the end moves in by 1/2 int v'^2 dx (1 %)")
+elif mode == "ranks":
+    # The rigid constraint ties nodes that METIS puts on different ranks: 1, 2 and 3 ranks agree.
+    case = os.path.join(cases, "verification", "rollup_rigid_moment.prm")
+    sets = ["Boundary conditions/Rigid=right: moment=_pi/2*1000/12/100, force=0.001 0.002"]
+    results = [run_case(case, sets, np=n)["quantities"] for n in (1, 2, 3)]
+    for key in ("rigid_rotation_right_z", "displacement_tip_x", "displacement_tip_y"):
+        values = [r[key] for r in results]
+        print("%-24s %s" % (key, " ".join("%.12g" % v for v in values)))
+        check(max(abs(v - values[0]) for v in values) <= 1e-8 * abs(values[0]),
+              "%s the same on 1, 2, 3 ranks (1e-8: Newton's tolerance)" % key)
+else:
+    sys.exit("unknown mode " + mode)
+
+sys.exit(1 if failed else 0)
