@@ -560,7 +560,9 @@ namespace compliant
     // 108 s against MUMPS's 78 s (README, Speed). MUMPS again if CG fails (an indefinite tangent
     // near a limit point breaks CG).
     const std::string &method = parameters.solver_method;
-    const bool iterative = !mixed && !iterative_failed && method == "cg-amg";
+    // (not on the unsymmetric tangent of a 3D rigid boundary under a moment)
+    const bool iterative = !mixed && !iterative_failed && method == "cg-amg" &&
+                           !(dim == 3 && !rigid_boundaries.empty());
     LinearSolverSettings amg{"cg-amg", 1e-10, 500, parameters.petsc_options};
     const auto modes = iterative ? rigid_body_modes(*mapping, dof_handler, communicator) :
                                    std::vector<PETScWrappers::MPI::Vector>();
@@ -745,6 +747,8 @@ namespace compliant
              " until it failed (" + iterative_failure + "), then direct (MUMPS)";
     if (matrix_free_tangent())
       return "matrix-free p-multigrid on the Newton tangent (Davydov et al. 2020)";
+    if (method == "cg-amg" && dim == 3 && !rigid_boundaries.empty())
+      return "direct (MUMPS) on the assembled tangent: a rigid boundary's tangent is unsymmetric in 3D";
     if (method == "cg-amg" && !mixed)
       return "CG + GAMG on the assembled tangent";
     return "direct (MUMPS) on the assembled tangent" + (why.empty() ? std::string() : ": " + why);
