@@ -107,6 +107,29 @@ namespace closed_forms
                   " > 0.1: geometric nonlinearity matters (error > ~1 %); use elastica_tip_force_*");
       }
 
+      // A bound on a linear cantilever formula's error against plane-stress elasticity of an
+      // end-loaded cantilever (model ladder, rung (a)). Three parts: the geometric nonlinearity
+      // (the elastica's tip deflection at alpha = P L^2 / E I against the linear alpha / 3); the
+      // shear term, shear_coefficient (h/L)^2, the formula's departure from Timoshenko and
+      // Goodier's elasticity solution; and (h/L)^2 for a root restrained otherwise than theirs
+      // (fully clamped: measured 0.6-0.9 (h/L)^2 at L/h = 10-40, cases/verification/cantilever_2d.prm).
+      void
+      bound_cantilever_deflection(Result &result, const double P, const double L, const double E,
+                                  const double b, const double h, const double shear_coefficient,
+                                  const std::string &shear_text)
+      {
+        const double alpha = P * L * L / (E * second_moment_of_area(b, h));
+        const double geometric =
+          alpha == 0 ? 0 : std::abs((alpha / 3) / tip_load_elastica(alpha).deflection - 1);
+        const double slenderness = (h / L) * (h / L);
+        result.error_bound = geometric + shear_coefficient * slenderness + slenderness;
+        result.error_bound_basis = "geometric nonlinearity (elastica) " + number(geometric) + ", " +
+                                   shear_text + " " + number(shear_coefficient * slenderness) +
+                                   ", root restraint (h/L)^2 = " + number(slenderness) +
+                                   "; assumes the case's load and clamp are the formula's";
+        result.bound_models = {"plane stress"};
+      }
+
       void
       check_prbm_angle(Result &result, const double Theta)
       {
@@ -156,6 +179,9 @@ namespace closed_forms
                       {}};
              check_beam_slenderness(r, p.at("L"), p.at("h"));
              check_linear_deflection(r, r.value, p.at("L"));
+             // nu is not an argument: the shear term at its largest, nu = 0.5
+             bound_cantilever_deflection(r, p.at("P"), p.at("L"), p.at("E"), p.at("b"), p.at("h"),
+                                         (4 + 5 * 0.5) / 8, "shear deformation omitted (4 + 5 nu)/8 (h/L)^2 at nu = 0.5");
              return r;
            }});
 
@@ -171,6 +197,12 @@ namespace closed_forms
                       {}};
              check_timoshenko_slenderness(r, p.at("L"), p.at("h"));
              check_linear_deflection(r, r.value, p.at("L"));
+             {
+               const double nu = p.at("nu");
+               bound_cantilever_deflection(r, p.at("P"), p.at("L"), p.at("E"), p.at("b"), p.at("h"),
+                                           std::abs((1 + nu) / (2 * p.at("kappa")) - (4 + 5 * nu) / 8),
+                                           "shear term against Timoshenko-Goodier's");
+             }
              return r;
            }});
 
@@ -185,6 +217,8 @@ namespace closed_forms
                                                                p.at("nu"), p.at("b"), p.at("h")),
                       {}};
              check_linear_deflection(r, r.value, p.at("L"));
+             bound_cantilever_deflection(r, p.at("P"), p.at("L"), p.at("E"), p.at("b"), p.at("h"), 0,
+                                         "shear (exact)");
              return r;
            }});
 

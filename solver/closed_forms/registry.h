@@ -4,8 +4,10 @@
 #define CLOSED_FORMS_REGISTRY_H
 
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace closed_forms
@@ -21,8 +23,16 @@ namespace closed_forms
 
   struct Result
   {
+    Result(double value = 0, std::vector<std::string> warnings = {})
+      : value(value), warnings(std::move(warnings))
+    {}
     double value;
     std::vector<std::string> warnings;  // the arguments lie outside the formula's validity range
+    // Where the formula can bound its own error: a bound on |value / elasticity solution - 1|, what
+    // it is made of, and the models (Model = ...) the bound holds for. NaN: no bound.
+    double error_bound = std::numeric_limits<double>::quiet_NaN();
+    std::string error_bound_basis;
+    std::vector<std::string> bound_models;
   };
 
   struct Formula

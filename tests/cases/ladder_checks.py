@@ -19,6 +19,8 @@ met against independent references, the linear/finite-strain decision, and singu
 4. Adaptive refinement (Kelly, hanging nodes) on Cook's membrane meets a 0.01 % target on a steady
    observed order, with a trustworthy estimate, on far fewer DoFs than uniform refinement, and a
    0.05 % target through the safety factor on an unsteady order.
+5. Rung (a): a closed form with its own error bound answers a slender cantilever without FE, the
+   true error within the bound; a stocky one climbs.
 """
 import csv
 import json
@@ -179,6 +181,29 @@ if rows and summary:
         closed = [c for c in summary["comparisons"] if c["quantity"] == quantity][0]
         check(abs(closed["relative_difference"]) <= 0.005,
               "elastica %s: final value within the target of the Euler elastica (%.2g)" % (quantity, closed["relative_difference"]))
+
+# Rung (a): a closed form whose own bound meets the target answers without any FE model. The 2D
+# cantilever (plane stress, clamped, end load) at L/h = 40: Timoshenko's bound is 0.069 % (shear
+# term against Timoshenko-Goodier, root restraint (h/L)^2, geometric term from the elastica). Its
+# true error against the converged FE (ny = 8, Q3: -1.2800804, changing by 1e-7 from ny = 4) must
+# lie within the bound and the target. At L/h = 10 the smallest bound is 1.1 % > 0.5 %: it climbs.
+cantilever = os.path.join(cases, "verification", "cantilever_2d.prm")
+slender = ["Geometry/Parameters/L=400", "Target/Relative error=0.5", "Target/Quantities=mean_displacement_right_y"]
+proc, summary, rows = ladder(cantilever, slender)
+ok = proc.returncode == 0 and summary and len(rows) == 1 and rows[0]["model"] == "closed form"
+check(ok, "slender cantilever: rung (a) answers by a closed form, no FE rung (exit %d, %d rungs)" % (proc.returncode, len(rows)))
+if ok:
+    value = summary["quantities"]["mean_displacement_right_y"]
+    bound = summary["quantities"]["mean_displacement_right_y_error_estimate"]
+    true = abs(value / -1.2800804 - 1)
+    print("  closed form %.8g, bound %.3g %%, true error %.3g %%" % (value, 100 * bound, 100 * true))
+    check(true <= bound <= 0.005, "slender cantilever: true error <= bound <= target")
+proc, summary, rows = ladder(cantilever, slender + ["Target/Closed forms=false"])
+check(proc.returncode == 0 and len(rows) >= 3 and rows[0]["model"] == "linear",
+      "Target/Closed forms = false climbs FE rungs (%d)" % len(rows))
+proc, summary, rows = ladder(cantilever, ["Target/Relative error=0.5", "Target/Quantities=mean_displacement_right_y"])
+check(proc.returncode == 0 and len(rows) >= 3 and "bound" in proc.stdout and "> target" in proc.stdout,
+      "stocky cantilever (L/h = 10): the bound misses the target, said, and the FE rungs climb")
 
 print("FAIL" if failures else "PASS")
 sys.exit(1 if failures else 0)

@@ -29,6 +29,7 @@ namespace compliant
     bool                     adaptive = false;       // Refinement = adaptive
     bool                     degree   = false;       // Refinement = degree
     double                   refined_fraction = 0.3; // of the cells, per adaptive rung
+    bool                     closed_forms = true;    // rung (a): a closed form with a bound may stop the climb
   };
 
   void           declare_target_settings(dealii::ParameterHandler &prm);

@@ -243,3 +243,32 @@ TEST(Registry, WarningFreeFormulasStayQuiet)
   EXPECT_TRUE(evaluate("saint_venant_beta", {{"a", 1000.0}, {"b", 1.0}}).warnings.empty());
   EXPECT_TRUE(evaluate("warping_constant", {{"a", 1.0}, {"b", 1.0}}).warnings.empty());
 }
+
+// The error bounds of the cantilever formulas (model ladder, rung (a)) must cover what they
+// claim to: Euler-Bernoulli's departure from the exact Timoshenko-Goodier elasticity solution
+// (shear) at any nu, and Timoshenko's; and they grow with h/L and with the load (elastica).
+TEST(Registry, CantileverBoundsCoverTheShearTheyOmit)
+{
+  for (const double nu : {0.0, 0.3, 0.49})
+    for (const double slenderness : {5.0, 10.0, 40.0})
+      {
+        const std::map<std::string, double> beam{{"P", 1e-3}, {"L", slenderness}, {"E", 1000},
+                                                 {"b", 1}, {"h", 1}};
+        auto with_nu = beam;
+        with_nu["nu"] = nu;
+        const auto exact = closed_forms::evaluate("timoshenko_goodier_cantilever_deflection", with_nu);
+        const auto euler = closed_forms::evaluate("euler_bernoulli_cantilever_deflection", beam);
+        const auto timo  = closed_forms::evaluate("timoshenko_cantilever_deflection", with_nu);
+        EXPECT_GE(euler.error_bound, std::abs(euler.value / exact.value - 1));
+        EXPECT_GE(timo.error_bound, std::abs(timo.value / exact.value - 1));
+        // the root-restraint allowance (h/L)^2 is part of every bound
+        EXPECT_GE(exact.error_bound, 1 / (slenderness * slenderness));
+        EXPECT_EQ(euler.bound_models, std::vector<std::string>{"plane stress"});
+      }
+  // A large load adds the elastica's geometric term: alpha = 1 is 4.8 % off the linear answer.
+  const auto heavy = closed_forms::evaluate(
+    "euler_bernoulli_cantilever_deflection", {{"P", 1000.0 / 12 / 1e4}, {"L", 100}, {"E", 1000}, {"b", 1}, {"h", 1}});
+  EXPECT_GT(heavy.error_bound, 0.04);
+  // Formulas without a bound say so with NaN.
+  EXPECT_TRUE(std::isnan(closed_forms::evaluate("torsion_constant", {{"a", 1}, {"b", 2}}).error_bound));
+}
