@@ -227,7 +227,16 @@ namespace compliant
                   why = check.formula + " needs FE results in its arguments";
                   continue;
                 }
-              const auto result = closed_forms::evaluate(check.formula, arguments);
+              closed_forms::Result result;
+              try
+                {
+                  result = closed_forms::evaluate(check.formula, arguments);
+                }
+              catch (const std::exception &e)
+                {
+                  throw InputError("case file '" + p.case_file + "', Comparison/Checks '" + n + " ~ " +
+                                   check.formula + "': " + e.what());
+                }
               if (!std::isfinite(result.error_bound))
                 {
                   why = check.formula + " has no error bound";
