@@ -161,6 +161,8 @@ solver_case("rigid force infinite", [rigid_case, S, "Boundary conditions/Rigid=r
 solver_case("rigid unknown field", [rigid_case, S, "Boundary conditions/Rigid=right: torque=1"],
             ["Rigid", "torque", "expected moment"])
 solver_case("rigid boundary in a modal analysis", [rigid_case, S, "Analysis=modal"], ["Rigid", "modal"])
+solver_case("nonlinear, no supports, only a rigid moment", [rigid_case, S, "Analysis=nonlinear static", S,
+            "Boundary conditions/Clamped="], ["Boundary conditions", "constrained"])
 solver_case("ladder: closed form with a negative length", [os.path.join(root, "cases", "verification", "cantilever_2d.prm"),
             S, "Target/Relative error=0.5", S,
             "Comparison/Checks=mean_displacement_right_y ~ euler_bernoulli_cantilever_deflection(P=-1, L=-5, E=E, b=thickness, h=H)"],

@@ -100,6 +100,11 @@ namespace compliant
         {
           parse_checks(p.checks);
           problem.setup();
+          const auto &bc = problem.boundary_conditions;
+          if (bc.clamped.empty() && bc.displacements.empty() && bc.rotations.empty())
+            throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
+                                        "a static solve needs the rigid-body motion constrained (a "
+                                        "Rigid boundary moves with the body, it does not hold it)");
           validate_quantity_requests(problem);
         }
       catch (const std::invalid_argument &e)
