@@ -114,6 +114,7 @@ namespace compliant
     for (const auto &[index, node] : all_nodes)
       for (unsigned int d = 0; d < dim; ++d)
         centroid[d] += node[3 + d] / all_nodes.size();
+    pivot  = centroid;
     center = centroid;
     if (load.has_center)
       for (unsigned int d = 0; d < dim; ++d)
@@ -173,7 +174,7 @@ namespace compliant
           const auto it    = std::find_if(boundary_dofs.begin(), boundary_dofs.end(),
                                        [&](const BoundaryDof &b) { return b.index == index; });
           candidates.push_back(it - boundary_dofs.begin());
-          size = std::max(size, free_nodes[n].first.distance(center));
+          size = std::max(size, free_nodes[n].first.distance(pivot));
         }
     linearize(nullptr);
   }
@@ -242,7 +243,7 @@ namespace compliant
         const Tensor<2, 3> E = frame(X[1] - X[0], X[2] - X[0]), e = frame(x[1] - x[0], x[2] - x[0]);
         R = e * transpose(E);
       }
-    x_c = x[0] - R * (X[0] - center);
+    x_c = x[0] - R * (X[0] - pivot);
   }
 
   template <int dim>
@@ -251,7 +252,7 @@ namespace compliant
     if (u == nullptr)
       {
         rotation        = unit_symmetric_tensor<dim>();
-        center_position = center;
+        center_position = pivot;
       }
     else
       {
@@ -274,7 +275,7 @@ namespace compliant
             if (std::find(masters.begin(), masters.end(), c) != masters.end())
               continue;
             auto row = motion_row(boundary_dofs[c].component,
-                                  rotation * (boundary_dofs[c].point - center));
+                                  rotation * (boundary_dofs[c].point - pivot));
             for (unsigned int j = dim; j < n_motions; ++j)
               row[j] /= size;
             for (const auto &e : basis)
@@ -304,7 +305,7 @@ namespace compliant
     for (unsigned int m = 0; m < n_motions; ++m)
       {
         const auto &dof = boundary_dofs[masters[m]];
-        const auto  row = motion_row(dof.component, rotation * (dof.point - center));
+        const auto  row = motion_row(dof.component, rotation * (dof.point - pivot));
         for (unsigned int j = 0; j < n_motions; ++j)
           P(m, j) = row[j];
       }
@@ -348,7 +349,7 @@ namespace compliant
               constraints.add_entry(dof.index, boundary_dofs[c].index, 1.);
             continue;
           }
-        const auto row = motion_row(dof.component, rotation * (dof.point - center));
+        const auto row = motion_row(dof.component, rotation * (dof.point - pivot));
         for (unsigned int m = 0; m < n_motions; ++m)
           {
             double c = 0;
@@ -374,11 +375,18 @@ namespace compliant
     Vector<double> g(n_motions);
     for (unsigned int d = 0; d < dim; ++d)
       g(d) = scale * load.force[d];
+    // The force acts at the load point, which turns with the boundary: about the pivot it adds
+    // the moment r_u x F, r_u = R (center - pivot).
+    Tensor<1, 3> r_u, F;
+    const Tensor<1, dim> arm = rotation * (center - pivot);
+    for (unsigned int d = 0; d < dim; ++d)
+      r_u[d] = arm[d], F[d] = scale * load.force[d];
+    const Tensor<1, 3> moment = scale * load.moment + cross_product_3d(r_u, F);
     if constexpr (dim == 2)
-      g(2) = scale * load.moment[2];
+      g(2) = moment[2];
     else
       for (unsigned int d = 0; d < 3; ++d)
-        g(3 + d) = scale * load.moment[d];
+        g(3 + d) = moment[d];
     std::vector<types::global_dof_index> indices;
     Vector<double>                       f;
     if (constraints != nullptr)
@@ -398,7 +406,7 @@ namespace compliant
         for (unsigned int k = 0; k < candidates.size(); ++k)
           {
             const auto &dof = boundary_dofs[candidates[k]];
-            const auto  row = motion_row(dof.component, rotation * (dof.point - center));
+            const auto  row = motion_row(dof.component, rotation * (dof.point - pivot));
             for (unsigned int j = 0; j < n_motions; ++j)
               P(k, j) = row[j];
             indices.push_back(dof.index);
@@ -415,6 +423,7 @@ namespace compliant
 
   template <int dim>
   void RigidBoundary<dim>::add_geometric_stiffness(const PETScWrappers::MPI::Vector &residual,
+                                                   const double                      scale,
                                                    PETScWrappers::MPI::SparseMatrix &matrix) const
   {
     constexpr unsigned int n_rotations = n_motions - dim;
@@ -423,7 +432,7 @@ namespace compliant
       if (residual.in_local_range(dof.index))
         {
           const double         f = -residual[dof.index];
-          const Tensor<1, dim> r = rotation * (dof.point - center);
+          const Tensor<1, dim> r = rotation * (dof.point - pivot);
           if constexpr (dim == 3)
             for (unsigned int j = 0; j < 3; ++j)
               sums[j * 3 + dof.component] += r[j] * f;
@@ -432,6 +441,17 @@ namespace compliant
     MPI_Allreduce(MPI_IN_PLACE, sums.data(), sums.size(), MPI_DOUBLE, MPI_SUM, communicator);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
+    // The applied force at the load point turns with the boundary too: its own term, with the
+    // sign of an external force (f = -F at r_u).
+    const Tensor<1, dim> r_u = rotation * (center - pivot);
+    for (unsigned int k = 0; k < dim; ++k)
+      {
+        const double f = -scale * load.force[k];
+        if constexpr (dim == 3)
+          for (unsigned int j = 0; j < 3; ++j)
+            sums[j * 3 + k] += r_u[j] * f;
+        sums.back() += f * r_u[k];
+      }
     FullMatrix<double> A(n_motions, n_motions), TtA(n_motions, n_motions), K(n_motions, n_motions);
     for (unsigned int j = 0; j < n_rotations; ++j)
       {
@@ -469,7 +489,7 @@ namespace compliant
     for (const auto &dof : boundary_dofs)
       if (u.in_local_range(dof.index))
         {
-          const Point<dim> x = x_c + R * (dof.point - center);
+          const Point<dim> x = x_c + R * (dof.point - pivot);
           u(dof.index)       = x[dof.component] - dof.point[dof.component];
         }
     u.compress(VectorOperation::insert);
@@ -489,16 +509,21 @@ namespace compliant
           u_masters(m) = values[std::find(candidates.begin(), candidates.end(), masters[m]) -
                                 candidates.begin()];
         master_to_motion.vmult(q, u_masters);
-        for (unsigned int d = 0; d < dim; ++d)
-          result.displacement[d] = q(d);
         for (unsigned int j = dim; j < n_motions; ++j)
           result.rotation[dim == 2 ? 2 : j - dim] = q(j);
+        // The load point's displacement: the pivot's plus psi x (center - pivot).
+        Tensor<1, 3> r3;
+        for (unsigned int d = 0; d < dim; ++d)
+          r3[d] = center[d] - pivot[d];
+        const Tensor<1, 3> turn = cross_product_3d(result.rotation, r3);
+        for (unsigned int d = 0; d < dim; ++d)
+          result.displacement[d] = q(d) + turn[d];
         return result;
       }
     Tensor<2, dim> R;
     Point<dim>     x_c;
     frame_from(values, R, x_c);
-    result.displacement = x_c - center;
+    result.displacement = (x_c + R * (center - pivot)) - center;
     if constexpr (dim == 2)
       {
         const double angle = std::atan2(R[1][0], R[0][0]);

@@ -3,7 +3,7 @@
 //
 // Every DoF of the boundary follows dim (2D: 3, 3D: 6) master DoFs of the same boundary through a
 // linear multi-point constraint: the rigid motion linearised about the current position,
-// du = dU + dpsi x (x - x_c). A Newton correction therefore moves the boundary rigidly to first
+// du = dU + dpsi x (x - x_p), about the pivot x_p (the centroid). A Newton correction therefore moves the boundary rigidly to first
 // order; move() then puts it on the exact rigid motion (rotation by Rodrigues' formula), so any
 // rotation (a cantilever rolled into a full circle) is reached without drift. The load enters as
 // nodal forces on a few DoFs whose resultant and moment about the centre are the given ones,
@@ -63,7 +63,9 @@ namespace compliant
     // sum_s r_j f_k - (f . r) delta_jk on the rotations, T^T A T on the masters. Without it
     // Newton stalls in 3D, where the bending stresses couple the rotations. Unsymmetric in 3D
     // (a space-fixed moment is not conservative). Collective; rank 0 adds, compress(add) after.
-    void add_geometric_stiffness(const dealii::PETScWrappers::MPI::Vector &residual,
+    // scale: the load factor of this boundary's force, which adds its own term when the load
+    // point is off the pivot.
+    void add_geometric_stiffness(const dealii::PETScWrappers::MPI::Vector &residual, double scale,
                                  dealii::PETScWrappers::MPI::SparseMatrix &matrix) const;
 
     // u (owned entries) gets the exact rigid motion reached from the linearised state by the
@@ -80,7 +82,13 @@ namespace compliant
     Motion motion(const dealii::PETScWrappers::MPI::Vector &u, bool geometrically_nonlinear) const;
 
     const RigidBoundaryLoad<dim> load;
-    dealii::Point<dim>           center; // reference position of the moment point
+    dealii::Point<dim>           center; // reference position of the load point (the force acts
+                                         // there; its displacement is reported)
+    // The point the rigid motion is linearised about: the centroid of the boundary's nodes. A
+    // load point far from the nodes (a spar 200 mm out on an arm) would make the linearisation
+    // error (distance x rotation^2) and so the jump of each exact projection large: Newton then
+    // wandered for 16 iterations per small step, where the centroid needs 4.
+    dealii::Point<dim> pivot;
 
   private:
     struct BoundaryDof
@@ -91,7 +99,7 @@ namespace compliant
     };
     std::vector<BoundaryDof>  boundary_dofs;
     std::vector<unsigned int> candidates; // all components of 2 (2D) or 3 (3D) spread-out nodes
-    double                    size = 1;   // largest distance of a candidate from the centre
+    double                    size = 1;   // largest distance of a candidate from the pivot
     MPI_Comm                  communicator;
 
     // The linearisation: rotation and centre position of the state, masters, and the map from

@@ -514,7 +514,7 @@ namespace compliant
       {
         boundary_forces.compress(VectorOperation::add);
         for (const auto &rigid : rigid_boundaries)
-          rigid.add_geometric_stiffness(boundary_forces, tangent);
+          rigid.add_geometric_stiffness(boundary_forces, lambda, tangent);
       }
     for (const auto &rigid : rigid_boundaries)
       {

@@ -276,12 +276,29 @@ int main(int argc, char **argv)
       positions_csv << "x,y,angle_deg\n" << std::setprecision(10);
       for (const auto &p : c.positions)
         positions_csv << p.x << ',' << p.y << ',' << deg(p.angle) << "\n";
+      // The single revolute joint at the pole (the practical answer when the curves collapse): per
+      // position its spar point, R_1 turned about the pivot, and how far that misses R_j. The
+      // compliant version (cases/morphing_wing/compliant_pivot.prm) starts from this file.
+      std::ostringstream pivot_csv;
+      pivot_csv << "position,pivot_x,pivot_y,radius,rotation_deg,rigid_x,rigid_y,target_x,target_y,rigid_miss\n"
+                << std::setprecision(10);
+      for (std::size_t j = 0; j < c.positions.size(); ++j)
+        {
+          const auto   &p0  = c.positions.front(), &pj = c.positions[j];
+          const double  turn = pj.angle - p0.angle;
+          const Complex rigid =
+            pivot.centre + (Complex(p0.x, p0.y) - pivot.centre) * std::polar(1.0, turn);
+          pivot_csv << j + 1 << ',' << pivot.centre.real() << ',' << pivot.centre.imag() << ',' << pivot.radius << ','
+                    << deg(turn) << ',' << rigid.real() << ',' << rigid.imag() << ',' << pj.x << ',' << pj.y << ','
+                    << std::abs(rigid - Complex(pj.x, pj.y)) << "\n";
+        }
       std::filesystem::create_directories(out);
+      write_file(std::filesystem::path(out) / "single_pivot.csv", pivot_csv.str());
       write_file(std::filesystem::path(out) / "burmester_curves.csv", curve_csv.str());
       write_file(std::filesystem::path(out) / "candidates.csv", all_csv.str());
       write_file(std::filesystem::path(out) / "mechanisms.csv", table.str());
       write_file(std::filesystem::path(out) / "positions.csv", positions_csv.str());
-      std::cout << "\nWrote " << out << "/{burmester_curves,candidates,mechanisms,positions}.csv\n";
+      std::cout << "\nWrote " << out << "/{burmester_curves,candidates,mechanisms,positions,single_pivot}.csv\n";
       return 0;
     }
   catch (const InputError &e)
