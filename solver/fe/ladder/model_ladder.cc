@@ -8,6 +8,7 @@
 #include "analyses/nonlinear_static.h"
 #include "input/spec_list.h"
 #include "quantities/comparison.h"
+#include "quantities/out_of_plane_bound.h"
 #include "elasticity/material.h"
 #include "input/expression.h"
 #include <closed_forms/registry.h>
@@ -120,9 +121,10 @@ namespace compliant
 
     std::vector<std::string> check_quantities(const std::string &checks)
     {
-      std::vector<std::string> names;
+      std::vector<std::string> names; // once each, though several checks may name a quantity
       for (const auto &c : parse_checks(checks))
-        names.push_back(c.quantity);
+        if (std::find(names.begin(), names.end(), c.quantity) == names.end())
+          names.push_back(c.quantity);
       return names;
     }
 
@@ -313,8 +315,15 @@ namespace compliant
       if (root && !target.closed_forms && !answers.empty())
         std::cout << "  (a) Target/Closed forms = false: climbing anyway" << std::endl;
     }
-    if (root)
-      std::cout << "  (b) dimension as set by Model = " << p.model << "\n";
+    // (b) A plane-stress model is checked against the 3D solid it stands for on every rung (the
+    // energy bound of quantities/out_of_plane_bound.h); the last rung's bound is reported.
+    double      out_of_plane = -1; // relative, < 0: not computed
+    std::string dimension_reason;
+    if (p.model != "plane stress" && root)
+      std::cout << "  (b) dimension as set by Model = " << p.model
+                << (p.model == "3d" ? "" : " (no out-of-plane bound for plane strain: it stands for a part "
+                                           "long in z or held at its z faces)")
+                << "\n";
 
     for (unsigned int k = 0; k <= target.max_refinements && !met; ++k)
       {
@@ -421,6 +430,26 @@ namespace compliant
             const double safety = steady ? 1 : 10;
             met = met && e.available && e.order_observed && safety * e.relative <= target.relative_error;
           }
+        if constexpr (dim == 2)
+          if (p.model == "plane stress" && !model.problem->mixed)
+            {
+              const auto   bound  = plane_stress_out_of_plane_bound(*model.problem);
+              const double energy = model.quantities.at("strain_energy");
+              out_of_plane        = energy > 0 ? bound.energy_difference / energy :
+                                                 std::numeric_limits<double>::infinity();
+              std::ostringstream why;
+              why << "plane stress against the 3D solid of thickness " << model.problem->thickness
+                  << ": |U_3D - U| <= " << percent(out_of_plane)
+                  << " of U (energy bound; it holds for the strain energy and the stiffness of a single "
+                     "load or drive)"
+                  << (out_of_plane <= target.relative_error ?
+                        " <= target: 2D is enough" :
+                        " > target: the 3D part may differ from this 2D model by more than the target; "
+                        "model it in 3D (Model = 3d) to meet the target against the solid");
+              dimension_reason = why.str();
+              if (k == 0 && root)
+                std::cout << "  (b) " << dimension_reason << "\n";
+            }
         if (k == 0)
           {
             // (c) the geometric error of the linear answer, of order theta^2.
@@ -574,6 +603,11 @@ namespace compliant
                 }
               summary.settings.insert({"ladder", fs_met ? "target met" : "target not met"});
               summary.settings.insert({"ladder_geometric_check", geometric_reason});
+              if (out_of_plane >= 0)
+                {
+                  summary.settings.insert({"ladder_dimension_check", dimension_reason + " (linear rung)"});
+                  summary.quantities["out_of_plane_bound"] = out_of_plane;
+                }
               summary.quantities["ladder_rungs"]          = rungs.size() + 1;
               summary.quantities["ladder_total_seconds"]  = total.wall_time();
               summary.quantities["target_relative_error"] = target.relative_error;
@@ -618,6 +652,11 @@ namespace compliant
                                                                  "target not met: " + too_large});
     summary.settings.insert({"ladder_geometric_check", geometric_reason});
     summary.quantities = chosen.quantities;
+    if (out_of_plane >= 0)
+      {
+        summary.settings.insert({"ladder_dimension_check", dimension_reason});
+        summary.quantities["out_of_plane_bound"] = out_of_plane;
+      }
     summary.quantities["ladder_rungs"]         = rungs.size();
     summary.quantities["ladder_total_seconds"] = total.wall_time();
     summary.quantities["target_relative_error"] = target.relative_error;

@@ -1,7 +1,9 @@
 // The model ladder (Target/Relative error > 0): a linear static case climbs from the cheapest model
 // until the estimated error of its quantities meets the target. Rungs: (a) a closed form named in
-// Comparison is reported with its validity warnings but gives no error bound, so it never ends the
-// climb; (b) 2D before 3D is the user's choice of Model (the ladder does not change the dimension);
+// Comparison answers a quantity when its own error bound meets the target; (b) the dimension is
+// the user's Model (the ladder does not change it), and a plane-stress model is checked against the
+// 3D solid it stands for by an energy bound (quantities/out_of_plane_bound.h), printed with its
+// verdict and written to the summary (out_of_plane_bound, ladder_dimension_check);
 // (c) linear before finite strain: after the first linear rung the largest material rotation theta
 // decides, the geometric error of a linear model being of order theta^2; (d) refinement at the
 // case's degree, uniform or adaptive (Kelly indicator, hanging nodes), or first the degree (2, 3, 4

@@ -1,0 +1,69 @@
+#!/usr/bin/python3
+"""Rung (b) of the model ladder: the out-of-plane bound of a plane-stress answer against the 3D solid.
+
+The plane-stress cantilever of cases/verification/cantilever_2d.prm (100 x 10, tip force) with
+thickness W = 1, 10, 40 climbs the ladder; its summary holds out_of_plane_bound, the bound on
+|U_3D - U_ps| / U_ps from the two energy principles (quantities/out_of_plane_bound.h). The same part
+is solved as a 3D solid (cases/verification/cantilever_3d.prm, Q2). The mean deflection of the loaded
+face is work-conjugate to the single load (2 U / F), so its relative gap is the energy's. Checked:
+  - the 3D part is at least as stiff as plane stress (static principle), up to the 3D mesh's own
+    error (Q2, stiff by < 0.06 % on these meshes: -0.0020014347 at 8 x 8 against -0.002000336 at 4 x 4);
+  - the true gap is within the bound, and the bound is not vacuous: at most 8 times the gap
+    (measured 1.2, 5.0 and 3.8 for W = 1, 10, 40: the clamp's anticlastic layer costs most of it;
+    at W = 1 the finer 3D mesh would bring the gap from 0.11 % to about 0.08 %);
+  - the ladder says 2D is enough at W = 1 (bound 0.13 % < 0.5 %) and asks for 3D at W = 10 and 40.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
+from study import mpi_env, solver_path  # noqa: E402
+
+cases = sys.argv[1]
+failures = []
+
+
+def check(ok, text):
+    print(("PASS " if ok else "FAIL ") + text)
+    if not ok:
+        failures.append(text)
+
+
+def run(case, sets):
+    out = tempfile.mkdtemp(prefix="oop-")
+    cmd = ["mpirun", "-np", "2", solver_path(), os.path.join(cases, "verification", case),
+           "--set", "Output/Directory=" + out] + sum([["--set", s] for s in sets], [])
+    proc = subprocess.run(cmd, capture_output=True, text=True, env=mpi_env())
+    if proc.returncode != 0:
+        sys.exit("run failed: %s\n%s%s" % (" ".join(cmd), proc.stdout[-3000:], proc.stderr[-2000:]))
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    subprocess.run(["rm", "-rf", out])
+    return proc.stdout, summary
+
+
+# 3D meshes: ny cells through the depth, nz across the width (Q2); at W = 1 the 3D mesh must be
+# fine (ny = 8) as its own stiffness error (0.1 % at ny = 4) is as large as the gap.
+for width, ny, nz in ((1, 8, 2), (10, 4, 4), (40, 4, 8)):
+    log, plane = run("cantilever_2d.prm", ["Material/Thickness=%g" % width, "Target/Relative error=0.5",
+                                           "Target/Closed forms=false"])
+    _, solid = run("cantilever_3d.prm", ["Geometry/Parameters/W=%g" % width, "Geometry/Parameters/ny=%d" % ny,
+                                          "Geometry/Parameters/nz=%d" % nz])
+    u2 = plane["quantities"]["mean_displacement_right_y"]
+    u3 = solid["quantities"]["mean_displacement_right_y"]
+    bound = plane["quantities"]["out_of_plane_bound"]
+    gap = (abs(u2) - abs(u3)) / abs(u2)
+    print("W = %g: plane stress %.8g, 3D %.8g, gap %.3f %%, bound %.3f %% (bound / gap %.1f)" % (
+        width, u2, u3, 100 * gap, 100 * bound, bound / gap if gap > 0 else float("inf")))
+    check(gap > -5e-4, "W = %g: the 3D part is at least as stiff as plane stress (gap %.3g)" % (width, gap))
+    check(gap <= bound, "W = %g: the gap %.3g is within the bound %.3g" % (width, gap, bound))
+    check(bound <= 8 * max(gap, 1e-4), "W = %g: the bound %.3g is at most 8 x the gap %.3g" % (width, bound, gap))
+    enough = bound <= 0.005
+    check(("2D is enough" in log) == enough and ("model it in 3D" in log) != enough,
+          "W = %g: the ladder's rung (b) says %s" % (width, "2D is enough" if enough else "model it in 3D"))
+    check(("ladder_dimension_check" in plane["settings"]), "W = %g: summary.json holds the dimension check" % width)
+
+print("%d failure(s)" % len(failures))
+sys.exit(1 if failures else 0)
