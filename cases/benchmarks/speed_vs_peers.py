@@ -9,10 +9,12 @@ The reference tip deflection is extrapolated from our three finest Q2 meshes (Ri
 observed order); every code's error is against it.
 
   scripts/setup.sh peers        # once: installs calculix-ccx and python3-dolfinx, builds
-  /usr/bin/python3 cases/benchmarks/speed_vs_peers.py [--problem cantilever|leaf] [--n ...] [--methods auto,cg-amg,direct]
+  /usr/bin/python3 cases/benchmarks/speed_vs_peers.py [--problem cantilever|leaf|hinge] [--n ...] [--methods auto,cg-amg,direct]
 
 Writes cases/benchmarks/<problem>_speed.{csv,md,png}. --problem leaf: the thin leaf in torsion of
-cases/benchmarks/leaf_torsion.prm (strain energy as QoI)."""
+cases/benchmarks/leaf_torsion.prm (strain energy as QoI). --problem hinge: the 3D blade flexure hinge of
+cases/benchmarks/hinge_3d.prm on the structured mesh of peers/hinge_mesh.py, written per level for
+all three codes (strain energy as QoI)."""
 import argparse
 import csv
 import json
@@ -45,24 +47,35 @@ PROBLEMS = {
                  dofs=lambda n: 3 * (10 * n + 1) * (20 * n + 1) * (2 * n + 1),
                  label="strain energy", title="leaf in torsion, 5m x 10m x m hexahedra (cells 8:1:1)"),
 }
+sys.path.insert(0, os.path.join(HERE, "peers"))
+import hinge_mesh  # noqa: E402
+
+PROBLEMS["hinge"] = dict(case="hinge_3d.prm", mesh=lambda m: {}, mesh_file=hinge_mesh.write_inp,
+                         qoi=lambda q: q["strain_energy"], fenicsx="fenicsx_hinge.py", fenicsx_qoi=lambda v: v,
+                         calculix_qoi=lambda v: v, dofs=hinge_mesh.q2_dofs, label="strain energy",
+                         title="3D blade flexure hinge, level m (blade cells 4:1:5)")
 PROBLEM = PROBLEMS["cantilever"]
 
 
 def run_ours(n, method, ranks):
-    out = tempfile.mkdtemp(prefix="bench-")
+    work = tempfile.mkdtemp(prefix="bench-")
+    out = os.path.join(work, "run")
     cmd = ["mpirun", "-np", str(ranks), SOLVER, os.path.join(HERE, PROBLEM["case"]),
            "--set", "Linear solver/Method=" + method, "--set", "Output/Directory=" + out]
     for name, value in PROBLEM["mesh"](n).items():
         cmd += ["--set", "Geometry/Parameters/%s=%d" % (name, value)]
+    if "mesh_file" in PROBLEM:  # the mesh the peers solve, written for this level
+        PROBLEM["mesh_file"](n, os.path.join(work, "mesh.inp"))
+        cmd += ["--set", "Geometry/Mesh file=" + os.path.join(work, "mesh.inp")]
     start = time.perf_counter()
     proc = subprocess.run(cmd, capture_output=True, text=True, env=ENV)
     wall = time.perf_counter() - start
     if proc.returncode != 0:
-        shutil.rmtree(out, ignore_errors=True)
+        shutil.rmtree(work, ignore_errors=True)
         return {"skipped": proc.stderr.strip().splitlines()[-1] if proc.stderr.strip() else "failed"}
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
-    shutil.rmtree(out, ignore_errors=True)
+    shutil.rmtree(work, ignore_errors=True)
     q = summary["quantities"]
     return {"dofs": q["n_dofs"], "qoi": PROBLEM["qoi"](q), "wall_s": wall,
             "solve_s": q["time_solve"], "iterations": q["solver_iterations"],
@@ -130,7 +143,7 @@ def main():
     args = parser.parse_args()
     global PROBLEM, PROBLEM_NAME
     PROBLEM, PROBLEM_NAME = PROBLEMS[args.problem], args.problem
-    args.n = args.n or ("2,4,6,8,12,16" if args.problem == "cantilever" else "1,2,3,4,6")
+    args.n = args.n or {"cantilever": "2,4,6,8,12,16", "leaf": "1,2,3,4,6", "hinge": "2,3,4,6,8,10"}[args.problem]
     ladder = [int(v) for v in args.n.split(",")]
     methods = [m for m in args.methods.split(",") if m]
     peers = [p for p in args.peers.split(",") if p]

@@ -3,6 +3,9 @@
 reduced integration), E = 1000, nu = 0.3, its default SPOOLES solver with 2 threads:
   cantilever N: 10 x 1 x 1, 10N x N x N cells, body load (0, 0, -1) through GRAV with density 1,
                 clamped at x = 0; QoI the tip deflection at (10, 0, 0);
+  hinge M:      the 3D blade flexure hinge of hinge_mesh.py (same cells as ours and FEniCSx), clamped
+                at x = 0, x = 24 turned rigidly by 1 degree about the z axis through (12, 0); QoI the
+                strain energy;
   leaf M:       40 x 10 x 1, 5M x 10M x M cells, clamped at x = 0, x = 40 turned rigidly by 1 degree
                 about the x axis (exact rotation per node); QoI the strain energy (*EL PRINT ELSE).
 Writes the deck into WORK, runs ccx, prints one JSON line. Run: calculix_box.py PROBLEM N WORK"""
@@ -14,13 +17,26 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import hinge_mesh  # noqa: E402
+
 problem, n, work = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+
+
+def uniform(lo, hi, cells):
+    return [lo + (hi - lo) * i / cells for i in range(cells + 1)]
+
+
 if problem == "cantilever":
-    (nx, ny, nz), lo, hi = (10 * n, n, n), (0.0, -0.5, -0.5), (10.0, 0.5, 0.5)
+    lines_xyz = uniform(0.0, 10.0, 10 * n), uniform(-0.5, 0.5, n), uniform(-0.5, 0.5, n)
 elif problem == "leaf":
-    (nx, ny, nz), lo, hi = (5 * n, 10 * n, n), (0.0, -5.0, -0.5), (40.0, 5.0, 0.5)
+    lines_xyz = uniform(0.0, 40.0, 5 * n), uniform(-5.0, 5.0, 10 * n), uniform(-0.5, 0.5, n)
+elif problem == "hinge":
+    *lines_xyz, hinge_cells = hinge_mesh.grid(n)
 else:
-    sys.exit("unknown problem '%s' (cantilever | leaf)" % problem)
+    sys.exit("unknown problem '%s' (cantilever | leaf | hinge)" % problem)
+nx, ny, nz = (len(g) - 1 for g in lines_xyz)
+cell_list = hinge_cells if problem == "hinge" else [(a, b, c) for c in range(nz) for b in range(ny) for a in range(nx)]
 os.makedirs(work, exist_ok=True)
 
 
@@ -28,8 +44,8 @@ def node_id(i, j, k):  # on the (2nx+1) x (2ny+1) x (2nz+1) grid of corner and m
     return 1 + i + (2 * nx + 1) * (j + (2 * ny + 1) * k)
 
 
-def coordinates(i, j, k):
-    return tuple(lo[d] + (hi[d] - lo[d]) * c / (2 * m) for d, (c, m) in enumerate(((i, nx), (j, ny), (k, nz))))
+def coordinates(i, j, k):  # even indices on the grid lines, odd ones half-way between
+    return tuple(g[c // 2] if c % 2 == 0 else 0.5 * (g[c // 2] + g[c // 2 + 1]) for g, c in zip(lines_xyz, (i, j, k)))
 
 
 # Local corner/mid-side offsets in CalculiX's C3D20 order (corners 1-8, then edges 9-20).
@@ -37,15 +53,13 @@ order = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2
          (1, 0, 0), (2, 1, 0), (1, 2, 0), (0, 1, 0), (1, 0, 2), (2, 1, 2), (1, 2, 2), (0, 1, 2),
          (0, 0, 1), (2, 0, 1), (2, 2, 1), (0, 2, 1)]
 elements, used = [], {}
-for c in range(nz):
-    for b in range(ny):
-        for a in range(nx):
-            ids = []
-            for di, dj, dk in order:
-                ijk = (2 * a + di, 2 * b + dj, 2 * c + dk)
-                used[node_id(*ijk)] = ijk
-                ids.append(node_id(*ijk))
-            elements.append(ids)
+for a, b, c in cell_list:
+    ids = []
+    for di, dj, dk in order:
+        ijk = (2 * a + di, 2 * b + dj, 2 * c + dk)
+        used[node_id(*ijk)] = ijk
+        ids.append(node_id(*ijk))
+    elements.append(ids)
 lines = ["*NODE"] + ["%d, %.12g, %.12g, %.12g" % ((nid,) + coordinates(*ijk)) for nid, ijk in sorted(used.items())]
 lines.append("*ELEMENT, TYPE=C3D20R, ELSET=EALL")
 for e, ids in enumerate(elements):
@@ -58,7 +72,7 @@ lines += ["*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.3", "*DENSITY", "1.",
 if problem == "cantilever":
     tip = node_id(2 * nx, ny, nz)
     lines += ["*DLOAD", "EALL, GRAV, 1., 0., 0., -1.", "*NSET, NSET=TIP", "%d," % tip, "*NODE PRINT, NSET=TIP", "U"]
-else:
+elif problem == "leaf":
     theta = math.radians(1.0)
     for nid, ijk in sorted(used.items()):
         if ijk[0] == 2 * nx:
@@ -66,6 +80,13 @@ else:
             lines += ["%d, 1, 1, 0." % nid,
                       "%d, 2, 2, %.10g" % (nid, y * (math.cos(theta) - 1) - z * math.sin(theta)),  # ccx reads 20 characters
                       "%d, 3, 3, %.10g" % (nid, y * math.sin(theta) + z * (math.cos(theta) - 1))]
+    lines += ["*EL PRINT, ELSET=EALL, TOTALS=ONLY", "ELSE"]
+else:
+    for nid, ijk in sorted(used.items()):
+        if ijk[0] == 2 * nx:
+            x, y, _ = coordinates(*ijk)
+            ux, uy = hinge_mesh.turned_displacement(x, y)
+            lines += ["%d, 1, 1, %.10g" % (nid, ux), "%d, 2, 2, %.10g" % (nid, uy), "%d, 3, 3, 0." % nid]
     lines += ["*EL PRINT, ELSET=EALL, TOTALS=ONLY", "ELSE"]
 lines.append("*END STEP")
 with open(os.path.join(work, "job.inp"), "w") as f:

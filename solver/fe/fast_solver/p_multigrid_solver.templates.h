@@ -110,7 +110,8 @@ namespace compliant::fast_solver
                                    std::clamp<unsigned int>(std::lround(std::sqrt(stats.smoothing_range)) - 1, 4, 16);
     stats.coarse_direct        = settings.coarse == PMultigridSettings::Coarse::direct ||
                           (settings.coarse == PMultigridSettings::Coarse::automatic && a > 3 &&
-                           L.dofs[0]->n_dofs() <= settings.direct_coarse_limit);
+                           L.dofs[0]->n_dofs() <= (dim == 3 ? settings.direct_coarse_limit_3d :
+                                                                  settings.direct_coarse_limit));
 
     coarse_rigid_body_modes = rigid_body_modes(mapping, *L.dofs[0], communicator);
     build_smoother_and_coarse_solver();

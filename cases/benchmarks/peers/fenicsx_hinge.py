@@ -1,0 +1,95 @@
+#!/usr/bin/python3
+"""FEniCSx (dolfinx 0.5) on the 3D blade flexure hinge (cases/benchmarks/hinge_3d.prm), the structured
+hexahedral mesh of hinge_mesh.py at level M (the same cells ours and CalculiX solve), Lagrange
+degree 2, E = 1000, nu = 0.3, clamped at x = 0, the end x = 24 turned rigidly by 1 degree about the
+z axis through (12, 0) (the exact rotation, as ours). CG + GAMG with block size and rigid-body modes,
+relative tolerance 1e-10. QoI: strain energy. One JSON line on rank 0.
+Run: mpirun -np 2 /usr/bin/python3 fenicsx_hinge.py M"""
+import json
+import math
+import os
+import resource
+import sys
+import time
+
+t_start = time.perf_counter()
+import numpy as np  # noqa: E402
+import ufl  # noqa: E402
+from dolfinx import fem, la, mesh  # noqa: E402
+from dolfinx.fem.petsc import LinearProblem  # noqa: E402
+from mpi4py import MPI  # noqa: E402
+from petsc4py import PETSc  # noqa: E402
+
+m = int(sys.argv[1])
+comm = MPI.COMM_WORLD
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import hinge_mesh  # noqa: E402
+
+# Rank 0 gives every cell (dolfinx's tensor-product vertex order), create_mesh partitions them.
+xs, ys, zs, cell_list = hinge_mesh.grid(m)
+nx, ny = len(xs), len(ys)
+if comm.rank == 0:
+    points = np.array([(x, y, z) for z in zs for y in ys for x in xs])
+    cells = np.array([[i + di + nx * (j + dj + ny * (k + dk)) for dk in (0, 1) for dj in (0, 1) for di in (0, 1)]
+                      for i, j, k in cell_list], dtype=np.int64)
+else:
+    points, cells = np.zeros((0, 3)), np.zeros((0, 8), dtype=np.int64)
+domain = mesh.create_mesh(comm, cells, points, ufl.Mesh(ufl.VectorElement("Lagrange", ufl.hexahedron, 1)))
+x_end = xs[-1]
+V = fem.VectorFunctionSpace(domain, ("Lagrange", 2))
+E, nu = 1000.0, 0.3
+mu, lmbda = E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))
+theta = math.radians(hinge_mesh.ANGLE_DEG)
+
+
+def eps(w):
+    return ufl.sym(ufl.grad(w))
+
+
+def sigma(w):
+    return 2 * mu * eps(w) + lmbda * ufl.tr(eps(w)) * ufl.Identity(3)
+
+
+u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
+clamped = fem.locate_dofs_geometrical(V, lambda x: np.isclose(x[0], 0.0))
+turned = fem.locate_dofs_geometrical(V, lambda x: np.isclose(x[0], x_end))
+rotation = fem.Function(V)
+cx, cy = hinge_mesh.CENTER
+rotation.interpolate(lambda x: np.vstack(((x[0] - cx) * (math.cos(theta) - 1) - (x[1] - cy) * math.sin(theta),
+                                          (x[0] - cx) * math.sin(theta) + (x[1] - cy) * (math.cos(theta) - 1),
+                                          0 * x[0])))
+bcs = [fem.dirichletbc(np.zeros(3, dtype=PETSc.ScalarType), clamped, V), fem.dirichletbc(rotation, turned)]
+zero = fem.Constant(domain, PETSc.ScalarType((0.0, 0.0, 0.0)))
+options = {"ksp_type": "cg", "ksp_rtol": 1e-10, "pc_type": "gamg", "mg_levels_ksp_type": "chebyshev",
+           "mg_levels_pc_type": "jacobi", "mg_levels_esteig_ksp_type": "cg",
+           "mg_levels_ksp_chebyshev_esteig_steps": 20}
+problem = LinearProblem(ufl.inner(sigma(u), eps(v)) * ufl.dx, ufl.inner(zero, v) * ufl.dx, bcs=bcs,
+                        petsc_options=options)
+# Rigid-body near null space, orthonormalized (as the dolfinx elasticity demo).
+index_map, bs = V.dofmap.index_map, V.dofmap.index_map_bs
+modes = [la.create_petsc_vector(index_map, bs) for _ in range(6)]
+with modes[0].localForm() as b0, modes[1].localForm() as b1, modes[2].localForm() as b2, \
+        modes[3].localForm() as b3, modes[4].localForm() as b4, modes[5].localForm() as b5:
+    basis = [np.asarray(x) for x in (b0, b1, b2, b3, b4, b5)]
+    dofs = [V.sub(i).dofmap.list.array for i in range(3)]
+    for i in range(3):
+        basis[i][dofs[i]] = 1.0
+    x = V.tabulate_dof_coordinates()
+    d = V.dofmap.list.array
+    x0, x1, x2 = x[d, 0], x[d, 1], x[d, 2]
+    basis[3][dofs[0]] = -x1
+    basis[3][dofs[1]] = x0
+    basis[4][dofs[0]] = x2
+    basis[4][dofs[2]] = -x0
+    basis[5][dofs[2]] = x1
+    basis[5][dofs[1]] = -x2
+la.orthonormalize(modes)
+problem.A.setNearNullSpace(PETSc.NullSpace().create(vectors=modes))
+t_solve = time.perf_counter()
+uh = problem.solve()
+t_end = time.perf_counter()
+energy = comm.allreduce(fem.assemble_scalar(fem.form(0.5 * ufl.inner(sigma(uh), eps(uh)) * ufl.dx)), op=MPI.SUM)
+memory = comm.allreduce(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0, op=MPI.MAX)
+if comm.rank == 0:
+    print(json.dumps({"dofs": index_map.size_global * bs, "qoi": energy, "solve_s": t_end - t_solve,
+                      "iterations": problem.solver.getIterationNumber(), "memory_mb": memory}))
