@@ -20,7 +20,8 @@ parser.add_argument("--out", default=None)
 args = parser.parse_args()
 rows = list(csv.DictReader(open(args.ladder_csv)))
 names = [k for k in rows[0] if k not in ("rung", "model", "degree", "refinements", "adaptive_cycles", "dofs", "seconds",
-                                          "cumulative_seconds") and not k.startswith("estimate_")]
+                                          "cumulative_seconds") and not k.startswith("estimate_")
+             and not k.startswith("stop_estimate_")]
 references = dict((kv.split("=")[0], float(kv.split("=")[1])) for kv in args.reference)
 fig, ax = plt.subplots(figsize=(7, 5))
 for name in names:
