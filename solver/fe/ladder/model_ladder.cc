@@ -172,6 +172,9 @@ namespace compliant
     // asymptotic rate); FE_SimplexP stops at 2 here (known after the first rung built the mesh).
     constexpr unsigned int             lowest_degree  = 2;
     unsigned int                       highest_degree = 4;
+    // The safety factor on an estimate whose observed order is not steady (see the stop rule).
+    const double                       unsteady_safety = target.degree ? 8 : 10;
+    const std::string                  unsteady_factor = std::to_string(static_cast<int>(unsteady_safety));
     std::unique_ptr<CaseParameters>    chosen_parameters;
     LinearStaticModel<dim>             chosen;
     bool                               met = false, finite_strain = false;
@@ -436,7 +439,7 @@ namespace compliant
             // worst effectivity on such rungs of Cook's membrane was 0.16), 8 on a triple of
             // degrees (bare effectivities 0.32 on Cook, 0.23 on the torsion bar: the convergence
             // in N slows from degree 3 to 4; 8 x puts them at 2.5 and 1.8).
-            const double safety = steady ? 1 : target.degree ? 8 : 10;
+            const double safety = steady ? 1 : unsteady_safety;
             rung.stop_estimates[n] = e.available && e.order_observed ? safety * e.relative : -1;
             met = met && e.available && e.order_observed && safety * e.relative <= target.relative_error;
           }
@@ -503,7 +506,7 @@ namespace compliant
               else if (!e.order_observed)
                 rung.decision += " " + n + " " + e.note + ", one more rung to observe it;";
               else if (unsteady.count(n))
-                rung.decision += " " + n + " " + unsteady[n] + " and " + (target.degree ? "8" : "10") +
+                rung.decision += " " + n + " " + unsteady[n] + " and " + unsteady_factor +
                                  " x estimate > target;";
             if (target.adaptive)
               adaptive_refinements.push_back(kelly_refine_flags(*model.problem, target.refined_fraction));
@@ -688,7 +691,7 @@ namespace compliant
             {
               summary.quantities[n + "_richardson_estimate"] = e.relative;
               summary.settings.insert({n + "_error_estimate_basis",
-                                       "observed order not steady: " + std::string(target.degree ? "8" : "10") +
+                                       "observed order not steady: " + unsteady_factor +
                                          " x the Richardson estimate"});
             }
         }
