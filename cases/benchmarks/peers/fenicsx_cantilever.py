@@ -5,6 +5,7 @@ x = 0. CG + GAMG given the block size (vector space) and the rigid-body near nul
 the dolfinx elasticity demo, relative tolerance 1e-10 like ours. Prints one JSON line (rank 0).
 Run: mpirun -np 2 /usr/bin/python3 fenicsx_cantilever.py N"""
 import json
+import os
 import resource
 import sys
 import time
@@ -12,10 +13,13 @@ import time
 t_start = time.perf_counter()
 import numpy as np  # noqa: E402
 import ufl  # noqa: E402
-from dolfinx import fem, la, mesh  # noqa: E402
+from dolfinx import fem, mesh  # noqa: E402
 from dolfinx.fem.petsc import apply_lifting, assemble_matrix, assemble_vector, set_bc  # noqa: E402
 from mpi4py import MPI  # noqa: E402
 from petsc4py import PETSc  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fenicsx_common import GAMG_OPTIONS, rigid_body_near_null_space  # noqa: E402
 
 n = int(sys.argv[1])
 comm = MPI.COMM_WORLD
@@ -46,38 +50,15 @@ apply_lifting(b, [a], bcs=[[bc]])
 b.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
 set_bc(b, [bc])
 
-# Rigid-body modes as near null space (translations and rotations), orthonormalized.
 index_map, bs = V.dofmap.index_map, V.dofmap.index_map_bs
-modes = [la.create_petsc_vector(index_map, bs) for _ in range(6)]
-with modes[0].localForm() as b0, modes[1].localForm() as b1, modes[2].localForm() as b2, \
-        modes[3].localForm() as b3, modes[4].localForm() as b4, modes[5].localForm() as b5:
-    basis = [np.asarray(x) for x in (b0, b1, b2, b3, b4, b5)]
-    dofs = [V.sub(i).dofmap.list.array for i in range(3)]
-    for i in range(3):
-        basis[i][dofs[i]] = 1.0
-    x = V.tabulate_dof_coordinates()
-    d = V.dofmap.list.array  # node (block) indices, matching dofs[i] entry by entry
-    x0, x1, x2 = x[d, 0], x[d, 1], x[d, 2]
-    basis[3][dofs[0]] = -x1
-    basis[3][dofs[1]] = x0
-    basis[4][dofs[0]] = x2
-    basis[4][dofs[2]] = -x0
-    basis[5][dofs[2]] = x1
-    basis[5][dofs[1]] = -x2
-la.orthonormalize(modes)
-A.setNearNullSpace(PETSc.NullSpace().create(vectors=modes))
+A.setNearNullSpace(rigid_body_near_null_space(V))
 t_solve = time.perf_counter()
 
 ksp = PETSc.KSP().create(comm)
 ksp.setOperators(A)
 opts = PETSc.Options()
-opts["ksp_type"] = "cg"
-opts["ksp_rtol"] = 1.0e-10
-opts["pc_type"] = "gamg"
-opts["mg_levels_ksp_type"] = "chebyshev"
-opts["mg_levels_pc_type"] = "jacobi"
-opts["mg_levels_esteig_ksp_type"] = "cg"
-opts["mg_levels_ksp_chebyshev_esteig_steps"] = 20
+for key, value in GAMG_OPTIONS.items():
+    opts[key] = value
 ksp.setFromOptions()
 uh = fem.Function(V)
 ksp.solve(b, uh.vector)

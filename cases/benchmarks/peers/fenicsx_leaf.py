@@ -6,6 +6,7 @@ size and rigid-body modes, relative tolerance 1e-10. QoI: strain energy. One JSO
 Run: mpirun -np 2 /usr/bin/python3 fenicsx_leaf.py M"""
 import json
 import math
+import os
 import resource
 import sys
 import time
@@ -13,10 +14,13 @@ import time
 t_start = time.perf_counter()
 import numpy as np  # noqa: E402
 import ufl  # noqa: E402
-from dolfinx import fem, la, mesh  # noqa: E402
+from dolfinx import fem, mesh  # noqa: E402
 from dolfinx.fem.petsc import LinearProblem  # noqa: E402
 from mpi4py import MPI  # noqa: E402
 from petsc4py import PETSc  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fenicsx_common import GAMG_OPTIONS, rigid_body_near_null_space  # noqa: E402
 
 m = int(sys.argv[1])
 comm = MPI.COMM_WORLD
@@ -44,31 +48,10 @@ rotation.interpolate(lambda x: np.vstack((0 * x[0], x[1] * (math.cos(theta) - 1)
                                           x[1] * math.sin(theta) + x[2] * (math.cos(theta) - 1))))
 bcs = [fem.dirichletbc(np.zeros(3, dtype=PETSc.ScalarType), clamped, V), fem.dirichletbc(rotation, turned)]
 zero = fem.Constant(domain, PETSc.ScalarType((0.0, 0.0, 0.0)))
-options = {"ksp_type": "cg", "ksp_rtol": 1e-10, "pc_type": "gamg", "mg_levels_ksp_type": "chebyshev",
-           "mg_levels_pc_type": "jacobi", "mg_levels_esteig_ksp_type": "cg",
-           "mg_levels_ksp_chebyshev_esteig_steps": 20}
 problem = LinearProblem(ufl.inner(sigma(u), eps(v)) * ufl.dx, ufl.inner(zero, v) * ufl.dx, bcs=bcs,
-                        petsc_options=options)
-# Rigid-body near null space, orthonormalized (as the dolfinx elasticity demo).
+                        petsc_options=GAMG_OPTIONS)
 index_map, bs = V.dofmap.index_map, V.dofmap.index_map_bs
-modes = [la.create_petsc_vector(index_map, bs) for _ in range(6)]
-with modes[0].localForm() as b0, modes[1].localForm() as b1, modes[2].localForm() as b2, \
-        modes[3].localForm() as b3, modes[4].localForm() as b4, modes[5].localForm() as b5:
-    basis = [np.asarray(x) for x in (b0, b1, b2, b3, b4, b5)]
-    dofs = [V.sub(i).dofmap.list.array for i in range(3)]
-    for i in range(3):
-        basis[i][dofs[i]] = 1.0
-    x = V.tabulate_dof_coordinates()
-    d = V.dofmap.list.array
-    x0, x1, x2 = x[d, 0], x[d, 1], x[d, 2]
-    basis[3][dofs[0]] = -x1
-    basis[3][dofs[1]] = x0
-    basis[4][dofs[0]] = x2
-    basis[4][dofs[2]] = -x0
-    basis[5][dofs[2]] = x1
-    basis[5][dofs[1]] = -x2
-la.orthonormalize(modes)
-problem.A.setNearNullSpace(PETSc.NullSpace().create(vectors=modes))
+problem.A.setNearNullSpace(rigid_body_near_null_space(V))
 t_solve = time.perf_counter()
 uh = problem.solve()
 t_end = time.perf_counter()

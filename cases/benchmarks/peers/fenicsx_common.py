@@ -1,0 +1,33 @@
+"""What the FEniCSx peer scripts share: CG + GAMG options as in the dolfinx elasticity demo, and the
+six rigid-body modes of a 3D vector space as GAMG's near null space (dolfinx 0.5)."""
+import numpy as np
+from dolfinx import la
+from petsc4py import PETSc
+
+# Relative tolerance 1e-10 like ours; Chebyshev-Jacobi smoothing with CG eigenvalue estimates.
+GAMG_OPTIONS = {"ksp_type": "cg", "ksp_rtol": 1e-10, "pc_type": "gamg", "mg_levels_ksp_type": "chebyshev",
+                "mg_levels_pc_type": "jacobi", "mg_levels_esteig_ksp_type": "cg",
+                "mg_levels_ksp_chebyshev_esteig_steps": 20}
+
+
+def rigid_body_near_null_space(V):
+    """Translations and rotations of V's nodes, orthonormalized, as a PETSc near null space."""
+    index_map, bs = V.dofmap.index_map, V.dofmap.index_map_bs
+    modes = [la.create_petsc_vector(index_map, bs) for _ in range(6)]
+    with modes[0].localForm() as b0, modes[1].localForm() as b1, modes[2].localForm() as b2, \
+            modes[3].localForm() as b3, modes[4].localForm() as b4, modes[5].localForm() as b5:
+        basis = [np.asarray(x) for x in (b0, b1, b2, b3, b4, b5)]
+        dofs = [V.sub(i).dofmap.list.array for i in range(3)]
+        for i in range(3):
+            basis[i][dofs[i]] = 1.0
+        x = V.tabulate_dof_coordinates()
+        d = V.dofmap.list.array  # node (block) indices, matching dofs[i] entry by entry
+        x0, x1, x2 = x[d, 0], x[d, 1], x[d, 2]
+        basis[3][dofs[0]] = -x1
+        basis[3][dofs[1]] = x0
+        basis[4][dofs[0]] = x2
+        basis[4][dofs[2]] = -x0
+        basis[5][dofs[2]] = x1
+        basis[5][dofs[1]] = -x2
+    la.orthonormalize(modes)
+    return PETSc.NullSpace().create(vectors=modes)
