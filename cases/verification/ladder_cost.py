@@ -42,14 +42,19 @@ PROBLEMS = [
                                    "Target/Maximum refinements=10"]),
     ("flexure hinge stiffness, 2D Q2 (converged)", "../flexure_hinge.prm", "rotational_stiffness_drive", 3.4341,
      [], []),
-    ("torsion bar J, 3D Q2 (Saint-Venant series)", "torsion_bar.prm", "J", None,
-     ["Geometry/Parameters/nx=30", "Geometry/Parameters/ny=6", "Geometry/Parameters/nz=1"], []),
+    ("torsion bar J, 3D Q2, uniform rungs (Saint-Venant series)", "torsion_bar.prm", "J", None,
+     ["Geometry/Parameters/nx=30", "Geometry/Parameters/ny=6", "Geometry/Parameters/nz=1"],
+     ["Target/Refinement=uniform"]),
     # Degree rungs (Target/Refinement = degree): 2, 3, 4 on the starting mesh, then halved cells.
     ("Cook's membrane, degree rungs", "cook_membrane_linear.prm", "displacement_mid_y", 23.9677,
      ["Geometry/Parameters/n=4"], ["Target/Allow finite strain=false", "Target/Refinement=degree"]),
-    ("torsion bar J, 3D, degree rungs", "torsion_bar.prm", "J", None,
-     ["Geometry/Parameters/nx=30", "Geometry/Parameters/ny=6", "Geometry/Parameters/nz=1"],
-     ["Target/Refinement=degree"]),
+    # The default in 3D (Target/Refinement = auto): degree rungs on hexahedra.
+    ("torsion bar J, 3D, default (degree rungs)", "torsion_bar.prm", "J", None,
+     ["Geometry/Parameters/nx=30", "Geometry/Parameters/ny=6", "Geometry/Parameters/nz=1"], []),
+    ("thick cylinder bore hoop stress, 3D Q2, uniform rungs (Lame)", "lame_cylinder_3d.prm", "stress_bore_yy", None,
+     [], ["Target/Refinement=uniform"]),
+    ("thick cylinder bore hoop stress, 3D, default (degree rungs)", "lame_cylinder_3d.prm", "stress_bore_yy", None,
+     [], []),
     # Finite strain: the ladder starts linear (Analysis=linear static), the sweep runs the case's
     # own nonlinear analysis. Reference: the converged continuum (5 refinements, 83k DoFs).
     ("elastica tip deflection, finite strain 2D Q2 (converged)", "elastica_tip_load.prm", "displacement_tip_y",

@@ -36,7 +36,7 @@ namespace compliant
     using namespace dealii;
     prm.enter_subsection("Target");
     prm.declare_entry("Relative error", "0", Patterns::Double(0, 100),
-                      "Percent. 0: solve the model as set. > 0: the model ladder refines uniformly "
+                      "Percent. 0: solve the model as set. > 0: the model ladder refines (Target/Refinement) "
                       "until the Richardson estimate of every target quantity's discretization "
                       "error is below this, and moves to finite strain when the rotations of the "
                       "linear answer make the geometric error (theta^2) larger (linear static only).");
@@ -50,7 +50,11 @@ namespace compliant
     prm.declare_entry("Maximum refinements", "4", Patterns::Integer(1, 12),
                       "Refinement rungs the ladder may add to the mesh of Discretization/Global "
                       "refinements.");
-    prm.declare_entry("Refinement", "uniform", Patterns::Selection("uniform|adaptive|degree"),
+    prm.declare_entry("Refinement", "auto", Patterns::Selection("auto|uniform|adaptive|degree"),
+                      "auto: degree on hexahedral 3D models (a degree step costs about 3x the DoFs "
+                      "where halving the cells costs 8x, and a uniform climb needs the rung after "
+                      "the first that meets the target to observe an order), uniform otherwise "
+                      "(2D, and tetrahedra after the first rung at degree 2). "
                       "uniform: every rung halves every cell. adaptive: every rung refines the cells "
                       "with the largest Kelly indicators (gradient jumps), leaving hanging nodes; "
                       "quadrilateral and hexahedral meshes only. degree: the rungs raise the "
@@ -80,6 +84,7 @@ namespace compliant
     t.allow_finite_strain = prm.get_bool("Allow finite strain");
     t.adaptive            = prm.get("Refinement") == "adaptive";
     t.degree              = prm.get("Refinement") == "degree";
+    t.automatic           = prm.get("Refinement") == "auto";
     t.refined_fraction    = prm.get_double("Refined cell fraction");
     t.closed_forms        = prm.get_bool("Closed forms");
     for (auto name : split(prm.get("Quantities"), ','))
@@ -172,9 +177,58 @@ namespace compliant
     // asymptotic rate); FE_SimplexP stops at 2 here (known after the first rung built the mesh).
     constexpr unsigned int             lowest_degree  = 2;
     unsigned int                       highest_degree = 4;
+    // Refinement = auto climbs in degree on 3D hexahedra (one degree step costs about 3x the DoFs
+    // where halving the cells costs 8x, and a uniform climb pays for the rung after the first that
+    // meets the target to observe an order: 5.2x the cheapest uniform mesh on the torsion bar,
+    // against 1.5x in degree); tetrahedra go uniform at degree 2 after the first rung.
+    bool                               degree_rungs = target.degree || (target.automatic && dim == 3);
+    unsigned int                       uniform_degree = p.element_degree;
     // The safety factor on an estimate whose observed order is not steady (see the stop rule).
-    const double                       unsteady_safety = target.degree ? 8 : 10;
-    const std::string                  unsteady_factor = std::to_string(static_cast<int>(unsteady_safety));
+    const auto unsteady_safety = [&]() { return degree_rungs ? 8.0 : 10.0; };
+    const auto unsteady_factor = [&]() { return std::to_string(static_cast<int>(unsteady_safety())); };
+    // The estimate the stop rule reads for quantity n (negative without an observed order): the
+    // Richardson one, times the safety factor while the observed order is not steady. Only an
+    // observed order ends the climb: an assumed one is optimistic at singularities. Adaptive meshes
+    // converge unevenly while the refinement finds the singular corners (Cook's membrane: observed
+    // orders 2.8, 6.2, 3.9 on the first rungs, estimates 6x too small): there the order must also
+    // hold steady over two successive triples (within a factor 1.5). Degree rungs likewise:
+    // convergence in N speeds up with the degree on smooth problems and is algebraic at
+    // singularities. The safety factor is 10 on adaptive rungs (the worst effectivity on such rungs
+    // of Cook's membrane was 0.16), 8 on a triple of degrees (bare effectivities 0.32 on Cook, 0.23
+    // on the torsion bar: the convergence in N slows from degree 3 to 4; 8 x puts them at 2.5 and
+    // 1.8).
+    const auto stop_estimate = [&](const std::string &n, const ErrorEstimate &e, const bool uneven) {
+      bool steady = true;
+      if (uneven)
+        {
+          const double previous = orders[n];
+          steady = e.order_observed && previous > 0 &&
+                   std::max(previous, e.observed_order) < 1.5 * std::min(previous, e.observed_order);
+          orders[n] = e.order_observed ? e.observed_order : 0;
+          if (!steady && e.available)
+            unsteady[n] = previous > 0 && e.order_observed ?
+                            "observed order not steady yet (" + std::to_string(previous).substr(0, 4) +
+                              " then " + std::to_string(e.observed_order).substr(0, 4) + ")" :
+                            "observed order not steady yet";
+          else
+            unsteady.erase(n);
+        }
+      return e.available && e.order_observed ? (steady ? 1 : unsteady_safety()) * e.relative : -1.0;
+    };
+    // Why a rung goes on: each quantity's missing or too large estimate.
+    const auto why_go_on = [&](const Rung &rung) {
+      std::string why;
+      for (const auto &[n, e] : rung.estimates)
+        if (!e.available)
+          why += " " + n + " " + e.note + ";";
+        else if (e.relative > target.relative_error)
+          why += " " + n + " estimate " + percent(e.relative) + " > target;";
+        else if (!e.order_observed)
+          why += " " + n + " " + e.note + ", one more rung to observe it;";
+        else if (unsteady.count(n))
+          why += " " + n + " " + unsteady[n] + " and " + unsteady_factor() + " x estimate > target;";
+      return why;
+    };
     std::unique_ptr<CaseParameters>    chosen_parameters;
     LinearStaticModel<dim>             chosen;
     bool                               met = false, finite_strain = false;
@@ -339,11 +393,11 @@ namespace compliant
       {
         auto rung_parameters = std::make_unique<CaseParameters>(p);
         // Degree rungs: 2, 3, ... up to the highest degree on the case's mesh, then halve cells.
-        const unsigned int h_steps = !target.degree                               ? k :
+        const unsigned int h_steps = !degree_rungs                               ? k :
                                      k + lowest_degree > highest_degree ? k + lowest_degree - highest_degree :
                                                                           0;
-        if (target.degree)
-          rung_parameters->element_degree = std::min(k + lowest_degree, highest_degree);
+        rung_parameters->element_degree =
+          degree_rungs ? std::min(k + lowest_degree, highest_degree) : uniform_degree;
         // Kelly's refine flags are computed over the whole mesh: adaptive rungs share it.
         if (target.adaptive && p.mesh_partition == "distributed")
           throw InputError("case file '" + p.case_file + "': Discretization/Mesh partition = "
@@ -360,7 +414,7 @@ namespace compliant
             {
               // The next rung (one more uniform refinement, or a higher degree, of the last
               // rung's mesh) must fit in memory.
-              const bool refines = !target.degree || h_steps > 0;
+              const bool refines = !degree_rungs || h_steps > 0;
               refuse_refinement_beyond_memory(last_cells, dim, refines ? 1 : 0,
                                               rung_parameters->element_degree,
                                               dealii::Utilities::MPI::n_mpi_processes(context.communicator));
@@ -383,14 +437,21 @@ namespace compliant
                            "needs a quadrilateral or hexahedral mesh (no hanging nodes on triangles or "
                            "tetrahedra); use uniform");
         if (k == 0 && !model.problem->triangulation.all_reference_cells_are_hyper_cube())
-          highest_degree = lowest_degree;
+          {
+            highest_degree = lowest_degree;
+            if (target.automatic)
+              {
+                degree_rungs   = false; // only halving is left: uniform rungs at degree 2
+                uniform_degree = lowest_degree;
+              }
+          }
         Rung rung;
         rung.degree          = rung_parameters->element_degree;
         rung.refinements     = rung_parameters->global_refinements;
         rung.adaptive_cycles = rung_parameters->adaptive_refinements.size();
         rung.dofs            = model.quantities.at("n_dofs");
         // Uniform rungs halve h exactly; adaptive ones measure it by the DoF count.
-        mesh_sizes.push_back(target.adaptive || target.degree ? std::pow(rung.dofs, -1.0 / dim) :
+        mesh_sizes.push_back(target.adaptive || degree_rungs ? std::pow(rung.dofs, -1.0 / dim) :
                                                                 std::ldexp(1.0, -static_cast<int>(k)));
         met              = true;
         // Targets may name derived quantities (Quantities/Derived) as well as computed ones.
@@ -414,34 +475,8 @@ namespace compliant
             // Assumed order in h for a smooth quantity: degree + 1 (displacements at points).
             const auto e      = estimate_discretization_error(history[n], mesh_sizes, rung.degree + 1.0);
             rung.estimates[n] = e;
-            // Only an observed order ends the climb: an assumed one is optimistic at singularities.
-            // Adaptive meshes converge unevenly while the refinement finds the singular corners
-            // (Cook's membrane: observed orders 2.8, 6.2, 3.9 on the first rungs, estimates 6x too
-            // small): there the order must also hold steady over two successive triples (within a
-            // factor 1.5). Degree rungs likewise: convergence in N speeds up with the degree on
-            // smooth problems and is algebraic at singularities.
-            bool steady = true;
-            if (target.adaptive || target.degree)
-              {
-                const double previous = orders[n];
-                steady = e.order_observed && previous > 0 &&
-                         std::max(previous, e.observed_order) < 1.5 * std::min(previous, e.observed_order);
-                orders[n] = e.order_observed ? e.observed_order : 0;
-                if (!steady && e.available)
-                  unsteady[n] = previous > 0 && e.order_observed ?
-                                  "observed order not steady yet (" + std::to_string(previous).substr(0, 4) +
-                                    " then " + std::to_string(e.observed_order).substr(0, 4) + ")" :
-                                  "observed order not steady yet";
-                else
-                  unsteady.erase(n);
-              }
-            // An unsteady order is trusted only with a safety factor: 10 on adaptive rungs (the
-            // worst effectivity on such rungs of Cook's membrane was 0.16), 8 on a triple of
-            // degrees (bare effectivities 0.32 on Cook, 0.23 on the torsion bar: the convergence
-            // in N slows from degree 3 to 4; 8 x puts them at 2.5 and 1.8).
-            const double safety = steady ? 1 : unsteady_safety;
-            rung.stop_estimates[n] = e.available && e.order_observed ? safety * e.relative : -1;
-            met = met && e.available && e.order_observed && safety * e.relative <= target.relative_error;
+            rung.stop_estimates[n] = stop_estimate(n, e, target.adaptive || degree_rungs);
+            met = met && rung.stop_estimates[n] >= 0 && rung.stop_estimates[n] <= target.relative_error;
           }
         if constexpr (dim == 2)
           if (p.model == "plane stress" && !model.problem->mixed)
@@ -496,18 +531,9 @@ namespace compliant
         else
           {
             rung.decision = target.adaptive                                   ? "refine adaptively:" :
-                            target.degree && k + lowest_degree < highest_degree ? "raise the degree:" :
+                            degree_rungs && k + lowest_degree < highest_degree ? "raise the degree:" :
                                                                       "refine:";
-            for (const auto &[n, e] : rung.estimates)
-              if (!e.available)
-                rung.decision += " " + n + " " + e.note + ";";
-              else if (e.relative > target.relative_error)
-                rung.decision += " " + n + " estimate " + percent(e.relative) + " > target;";
-              else if (!e.order_observed)
-                rung.decision += " " + n + " " + e.note + ", one more rung to observe it;";
-              else if (unsteady.count(n))
-                rung.decision += " " + n + " " + unsteady[n] + " and " + unsteady_factor +
-                                 " x estimate > target;";
+            rung.decision += why_go_on(rung);
             if (target.adaptive)
               adaptive_refinements.push_back(kelly_refine_flags(*model.problem, target.refined_fraction));
           }
@@ -556,23 +582,33 @@ namespace compliant
     };
     if (finite_strain)
       {
-        // (d) in finite strain: uniform refinement from the case's own mesh (adaptive
-        // refinement drives linear rungs only) until the estimate meets the target. Every rung
-        // writes the output directory; what stays is the last rung's, with its estimates.
+        // (d) in finite strain: from the case's own mesh, uniform refinement at the case's degree,
+        // or degree rungs as in the linear climb when Refinement = degree asks for them (adaptive
+        // refinement drives linear rungs only), until the estimate meets the target. Auto stays
+        // uniform here: the tangent is assembled cell by cell, whose cost grows steeply with the
+        // degree (3D roll-up, degrees 2, 3, 4: 2.9, 22, 130 s for 2.7k, 7.2k, 15k DoFs). Every
+        // rung writes the output directory; what stays is the last rung's, with its estimates.
         chosen.problem.reset();
+        const bool fs_degree_rungs = target.degree;
+        orders.clear();
+        unsteady.clear();
         const unsigned int first = p.global_refinements;
-        const unsigned int last  = p.global_refinements + target.max_refinements;
         std::map<std::string, std::vector<double>> fs_history;
         std::vector<double>                        fs_sizes;
         bool                                       fs_met = false;
         double                                     last_fs_cells = 0;
-        for (unsigned int r = first; r <= last && !fs_met; ++r)
+        for (unsigned int j = 0; j <= target.max_refinements && !fs_met; ++j)
           {
-            if (r > first)
+            const unsigned int h_steps = !fs_degree_rungs                               ? j :
+                                         j + lowest_degree > highest_degree ? j + lowest_degree - highest_degree :
+                                                                              0;
+            const unsigned int r      = first + h_steps;
+            const unsigned int degree = fs_degree_rungs ? std::min(j + lowest_degree, highest_degree) : uniform_degree;
+            if (j > 0)
               try
                 {
-                  refuse_refinement_beyond_memory(static_cast<std::uint64_t>(last_fs_cells), dim, 1,
-                                                  p.element_degree,
+                  refuse_refinement_beyond_memory(static_cast<std::uint64_t>(last_fs_cells), dim,
+                                                  !fs_degree_rungs || h_steps > 0 ? 1 : 0, degree,
                                                   dealii::Utilities::MPI::n_mpi_processes(context.communicator));
                 }
               catch (const ModelTooLarge &e)
@@ -580,12 +616,13 @@ namespace compliant
                   too_large = e.what();
                   rungs.back().decision = "target NOT met: the next rung would not fit in memory";
                   if (root)
-                    std::cout << "  (d) no finite-strain rung at " << r << " refinements: " << too_large << std::endl;
+                    std::cout << "  (d) no finite-strain rung at degree " << degree << ", " << r
+                              << " refinements: " << too_large << std::endl;
                   break;
                 }
             CaseParameters nonlinear     = *chosen_parameters;
             nonlinear.analysis           = "nonlinear static";
-            nonlinear.element_degree     = p.element_degree; // degree rungs drive linear rungs only
+            nonlinear.element_degree     = degree;
             nonlinear.global_refinements = r;
             RunContext nonlinear_context{nonlinear, context.prm, context.geometry, context.check_only,
                                          context.communicator};
@@ -598,7 +635,7 @@ namespace compliant
             const auto amend = [&](RunSummary &summary) {
               rung.dofs     = summary.quantities.at("n_dofs");
               last_fs_cells = summary.quantities.at("n_cells");
-              fs_sizes.push_back(std::ldexp(1.0, -static_cast<int>(r - first)));
+              fs_sizes.push_back(fs_degree_rungs ? std::pow(rung.dofs, -1.0 / dim) : std::ldexp(1.0, -static_cast<int>(j)));
               fs_met = true;
               for (const auto &n : names)
                 {
@@ -607,14 +644,23 @@ namespace compliant
                     throw InputError("case file '" + p.case_file + "', Target/Quantities: '" + n +
                                      "' is not a reported quantity of the finite-strain analysis");
                   fs_history[n].push_back(found->second);
-                  const auto e = estimate_discretization_error(fs_history[n], fs_sizes, p.element_degree + 1.0);
-                  rung.values[n]    = found->second;
-                  rung.estimates[n] = e;
-                  fs_met = fs_met && e.available && e.order_observed && e.relative <= target.relative_error;
+                  const auto e = estimate_discretization_error(fs_history[n], fs_sizes, degree + 1.0);
+                  rung.values[n]         = found->second;
+                  rung.estimates[n]      = e;
+                  const double stop      = stop_estimate(n, e, fs_degree_rungs);
+                  rung.stop_estimates[n] = stop;
+                  fs_met = fs_met && stop >= 0 && stop <= target.relative_error;
                   if (e.available)
                     {
-                      summary.quantities[n + "_error_estimate"] = e.relative;
+                      summary.quantities[n + "_error_estimate"] = std::max(stop, e.relative);
                       summary.quantities[n + "_observed_order"] = e.observed_order;
+                      if (stop > e.relative)
+                        {
+                          summary.quantities[n + "_richardson_estimate"] = e.relative;
+                          summary.settings.insert({n + "_error_estimate_basis",
+                                                   "observed order not steady: " + unsteady_factor() +
+                                                     " x the Richardson estimate"});
+                        }
                     }
                   else
                     summary.settings.insert({n + "_error_estimate", e.note});
@@ -641,19 +687,11 @@ namespace compliant
               }
             if (fs_met)
               rung.decision = "estimate meets the target: stop";
-            else if (r == last)
+            else if (j == target.max_refinements)
               rung.decision = "target NOT met within Target/Maximum refinements";
             else
-              {
-                rung.decision = "refine:";
-                for (const auto &[n, e] : rung.estimates)
-                  if (!e.available)
-                    rung.decision += " " + n + " " + e.note + ";";
-                  else if (!e.order_observed)
-                    rung.decision += " " + n + " " + e.note + ", one more rung to observe it;";
-                  else if (e.relative > target.relative_error)
-                    rung.decision += " " + n + " estimate " + percent(e.relative) + " > target;";
-              }
+              rung.decision = (fs_degree_rungs && j + lowest_degree < highest_degree ? "raise the degree:" : "refine:") +
+                              why_go_on(rung);
             print_rung(rung);
             rungs.push_back(rung);
           }
@@ -691,7 +729,7 @@ namespace compliant
             {
               summary.quantities[n + "_richardson_estimate"] = e.relative;
               summary.settings.insert({n + "_error_estimate_basis",
-                                       "observed order not steady: " + unsteady_factor +
+                                       "observed order not steady: " + unsteady_factor() +
                                          " x the Richardson estimate"});
             }
         }

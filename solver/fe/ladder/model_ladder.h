@@ -7,7 +7,7 @@
 // (c) linear before finite strain: after the first linear rung the largest material rotation theta
 // decides, the geometric error of a linear model being of order theta^2; (d) refinement at the
 // case's degree, uniform or adaptive (Kelly indicator, hanging nodes), or first the degree (2, 3, 4
-// on the case's mesh, then halved cells at the highest degree), until the Richardson estimate
+// on the case's mesh, then halved cells at the highest degree; the default on 3D hexahedra), until the Richardson estimate
 // (observed order, mesh size h = N^(-1/dim) from the DoF count N; for a degree sequence this is
 // the p-extension extrapolation of Szabo and Babuska) meets the target. Each rung is
 // printed (model, DoFs, time, values, estimates, why it went on) and written to ladder.csv.
@@ -30,6 +30,7 @@ namespace compliant
     bool                     allow_finite_strain = true;
     bool                     adaptive = false;       // Refinement = adaptive
     bool                     degree   = false;       // Refinement = degree
+    bool                     automatic = false;      // Refinement = auto: degree on 3D hexahedra, else uniform
     double                   refined_fraction = 0.3; // of the cells, per adaptive rung
     bool                     closed_forms = true;    // rung (a): a closed form with a bound may stop the climb
   };
