@@ -64,8 +64,10 @@ namespace compliant
                                                        serial);
           },
           communicator, dealii::Utilities::MPI::n_mpi_processes(communicator));
-      triangulation.create_triangulation(description);
+      // The manifolds go on first: building the levels of the description refines the coarse
+      // cells, and new vertices on curved faces must land on the curve, not on the chord.
       attach_curved_manifolds(triangulation, geometry.curved.exact);
+      triangulation.create_triangulation(description);
     }
   } // namespace
 

@@ -1,5 +1,7 @@
 #include "quantities/point_stress.h"
 
+#include "quantities/point_location.h"
+
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -62,24 +64,6 @@ namespace compliant
     {
       const SymmetricTensor<2, 3> deviator = s - trace(s) / 3 * unit_symmetric_tensor<3>();
       return std::sqrt(1.5 * (deviator * deviator));
-    }
-
-    // The locally owned cell around a point (invalid iterator if none on this rank) and the
-    // point's unit coordinates there.
-    template <int dim>
-    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-    owned_cell_around(const Mapping<dim> &mapping, const DoFHandler<dim> &dofs, const Point<dim> &p)
-    {
-      try
-        {
-          const auto found = GridTools::find_active_cell_around_point(mapping, dofs, p);
-          if (found.first.state() == IteratorState::valid && found.first->is_locally_owned())
-            return {found.first, GeometryInfo<dim>::project_to_unit_cell(found.second)};
-        }
-      catch (...)
-        {
-        }
-      return {typename DoFHandler<dim>::active_cell_iterator(), Point<dim>()};
     }
 
     // L2 projection of the stress components onto continuous scalar elements of the

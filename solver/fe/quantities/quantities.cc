@@ -2,6 +2,7 @@
 
 #include "quantities/named_points.h"
 #include "quantities/peak_sampling.h"
+#include "quantities/point_location.h"
 #include "quantities/point_stress.h"
 #include "quantities/region_maxima.h"
 
@@ -68,25 +69,16 @@ namespace compliant
     {
       Tensor<1, dim> value;
       double         owner_count = 0;
-      try
+      const auto cell_and_point = owned_cell_around(*problem.mapping, problem.dof_handler, p);
+      if (cell_and_point.first.state() == IteratorState::valid)
         {
-          const auto cell_and_point =
-            GridTools::find_active_cell_around_point(*problem.mapping, problem.dof_handler, p);
-          // deal.II 9.4 returns an invalid iterator (rather than throwing) for outside points
-          if (cell_and_point.first.state() == IteratorState::valid &&
-              cell_and_point.first->is_locally_owned())
-            {
-              const Quadrature<dim> q(GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
-              FEValues<dim>         fe_values(*problem.mapping, *problem.fe, q, update_values);
-              fe_values.reinit(cell_and_point.first);
-              std::vector<Tensor<1, dim>> u(1);
-              fe_values[FEValuesExtractors::Vector(0)].get_function_values(problem.solution, u);
-              value       = u[0];
-              owner_count = 1;
-            }
-        }
-      catch (...)
-        {
+          const Quadrature<dim> q(cell_and_point.second);
+          FEValues<dim>         fe_values(*problem.mapping, *problem.fe, q, update_values);
+          fe_values.reinit(cell_and_point.first);
+          std::vector<Tensor<1, dim>> u(1);
+          fe_values[FEValuesExtractors::Vector(0)].get_function_values(problem.solution, u);
+          value       = u[0];
+          owner_count = 1;
         }
       owner_count = Utilities::MPI::sum(owner_count, problem.communicator);
       found       = owner_count > 0;
