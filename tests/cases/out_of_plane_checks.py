@@ -12,6 +12,15 @@ face is work-conjugate to the single load (2 U / F), so its relative gap is the 
     (measured 1.2, 5.0 and 3.8 for W = 1, 10, 40: the clamp's anticlastic layer costs most of it;
     at W = 1 the finer 3D mesh would bring the gap from 0.11 % to about 0.08 %);
   - the ladder says 2D is enough at W = 1 (bound 0.13 % < 0.5 %) and asks for 3D at W = 10 and 40.
+Across dimensions (Target/Paired model, ladder/paired_model.h), each against the 3D solid above:
+  - the 3D cantilever at W = 1 paired with its plane-stress model stops in 2D (bound plus
+    discretization estimate within 0.5 %), and the 2D answer is within 0.5 % of the 3D solid and
+    within bound + estimate (+ 0.06 %, the 3D reference's own error);
+  - at W = 10 the same pair climbs the 3D model, which meets 0.5 % against the solid, and the summary
+    keeps the plane-stress bound that sent it there; a plane-stress case at W = 40 paired with its
+    3D part goes on to the 3D model the same way;
+  - a pair that is not the same part (thickness 1 against W = 10) is refused: exit 2, a message
+    naming Target/Paired model and both volumes, and no summary written.
 """
 import json
 import os
@@ -32,20 +41,27 @@ def check(ok, text):
         failures.append(text)
 
 
-def run(case, sets):
+def run_any(case, sets):
     out = tempfile.mkdtemp(prefix="oop-")
     cmd = ["mpirun", "-np", "2", solver_path(), os.path.join(cases, "verification", case),
            "--set", "Output/Directory=" + out] + sum([["--set", s] for s in sets], [])
     proc = subprocess.run(cmd, capture_output=True, text=True, env=mpi_env())
-    if proc.returncode != 0:
-        sys.exit("run failed: %s\n%s%s" % (" ".join(cmd), proc.stdout[-3000:], proc.stderr[-2000:]))
-    summary = json.load(open(os.path.join(out, "summary.json")))
+    path = os.path.join(out, "summary.json")
+    summary = json.load(open(path)) if os.path.exists(path) else None
     subprocess.run(["rm", "-rf", out])
+    return proc, summary
+
+
+def run(case, sets):
+    proc, summary = run_any(case, sets)
+    if proc.returncode != 0 or summary is None:
+        sys.exit("run failed: %s %s\n%s%s" % (case, sets, proc.stdout[-3000:], proc.stderr[-2000:]))
     return proc.stdout, summary
 
 
 # 3D meshes: ny cells through the depth, nz across the width (Q2); at W = 1 the 3D mesh must be
 # fine (ny = 8) as its own stiffness error (0.1 % at ny = 4) is as large as the gap.
+solid_reference = {}
 for width, ny, nz in ((1, 8, 2), (10, 4, 4), (40, 4, 8)):
     log, plane = run("cantilever_2d.prm", ["Material/Thickness=%g" % width, "Target/Relative error=0.5",
                                            "Target/Closed forms=false"])
@@ -53,6 +69,7 @@ for width, ny, nz in ((1, 8, 2), (10, 4, 4), (40, 4, 8)):
                                           "Geometry/Parameters/nz=%d" % nz])
     u2 = plane["quantities"]["mean_displacement_right_y"]
     u3 = solid["quantities"]["mean_displacement_right_y"]
+    solid_reference[width] = u3
     bound = plane["quantities"]["out_of_plane_bound"]
     gap = (abs(u2) - abs(u3)) / abs(u2)
     print("W = %g: plane stress %.8g, 3D %.8g, gap %.3f %%, bound %.3f %% (bound / gap %.1f)" % (
@@ -64,6 +81,43 @@ for width, ny, nz in ((1, 8, 2), (10, 4, 4), (40, 4, 8)):
     check(("2D is enough" in log) == enough and ("model it in 3D" in log) != enough,
           "W = %g: the ladder's rung (b) says %s" % (width, "2D is enough" if enough else "model it in 3D"))
     check(("ladder_dimension_check" in plane["settings"]), "W = %g: summary.json holds the dimension check" % width)
+
+# Across dimensions: the ladder chooses 2D or 3D itself.
+target = ["Target/Relative error=0.5"]
+pair_2d = "Target/Paired model=cantilever_2d.prm: Material/Thickness=W"
+proc, summary = run_any("cantilever_3d.prm", target + [pair_2d, "Geometry/Parameters/W=1", "Geometry/Parameters/nz=1"])
+q = summary["quantities"] if summary else {}
+u = q.get("mean_displacement_right_y", 0)
+error = abs(u - solid_reference[1]) / abs(solid_reference[1])
+allowed = q.get("out_of_plane_bound", 0) + q.get("mean_displacement_right_y_error_estimate", 0) + 6e-4
+print("W = 1, 3D case paired with plane stress: %s, %.8g, error against the solid %.3f %%, bound + estimate %.3f %%" % (
+    summary["case"] if summary else "-", u, 100 * error, 100 * (allowed - 6e-4)))
+check(proc.returncode == 0 and summary["case"].endswith("cantilever_2d.prm"),
+      "W = 1: the 3D case stops at its plane-stress model")
+check(error <= 0.005 and error <= allowed, "W = 1: the 2D answer is within the target and bound + estimate of the solid")
+
+proc, summary = run_any("cantilever_3d.prm", target + [pair_2d])
+q = summary["quantities"] if summary else {}
+error = abs(q.get("mean_displacement_right_y", 0) - solid_reference[10]) / abs(solid_reference[10])
+print("W = 10, 3D case paired with plane stress: %s, error against the solid %.3f %%" % (
+    summary["case"] if summary else "-", 100 * error))
+check(proc.returncode == 0 and summary["case"].endswith("cantilever_3d.prm") and
+      q.get("out_of_plane_bound", 0) > 0.005 and "ladder_dimension_check" in summary["settings"],
+      "W = 10: the 3D case climbs its own model, with the plane-stress bound that sent it there")
+check(error <= 0.005, "W = 10: the 3D answer meets the target against the solid")
+
+proc, summary = run_any("cantilever_2d.prm", target + [
+    "Material/Thickness=40", "Target/Paired model=cantilever_3d.prm: Geometry/Parameters/W=thickness, Geometry/Parameters/nz=8"])
+q = summary["quantities"] if summary else {}
+error = abs(q.get("mean_displacement_right_y", 0) - solid_reference[40]) / abs(solid_reference[40])
+print("W = 40, plane-stress case paired with its 3D part: %s, error against the solid %.3f %%" % (
+    summary["case"] if summary else "-", 100 * error))
+check(proc.returncode == 0 and summary["case"].endswith("cantilever_3d.prm") and error <= 0.005,
+      "W = 40: the plane-stress case goes on to its 3D part and meets the target against the solid")
+
+proc, summary = run_any("cantilever_3d.prm", target + ["Target/Paired model=cantilever_2d.prm"])
+check(proc.returncode == 2 and "Target/Paired model" in proc.stderr and "same part" in proc.stderr and summary is None,
+      "a pair that is not the same part is refused with exit 2, naming the entry, no output: " + proc.stderr.strip()[:160])
 
 print("%d failure(s)" % len(failures))
 sys.exit(1 if failures else 0)

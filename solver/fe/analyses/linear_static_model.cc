@@ -29,7 +29,9 @@ namespace compliant
       {
         throw InputError("case file '" + p.case_file + "': " + e.what());
       }
-    if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
+    // The log names this model's degree (a ladder rung's, not the case file's).
+    const RunContext model_context{p, context.prm, context.geometry, context.check_only, context.communicator};
+    if (report_mesh_and_stop_if_check(model_context, problem.triangulation.n_global_active_cells(),
                                       problem.dof_handler.n_dofs(),
                                       partition.partition == MeshPartition::distributed ?
                                         ", mesh distributed" : ""))

@@ -4,15 +4,12 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <boost/serialization/map.hpp>
-#include <boost/serialization/string.hpp>
-#include <boost/serialization/vector.hpp>
-
 #include <closed_forms/registry.h>
 
 #include "analyses/analysis.h"
 #include "elasticity/material.h"
 #include "input/case_file.h"
+#include "input/case_geometry.h"
 
 #include <chrono>
 #include <cstdlib>
@@ -36,54 +33,6 @@ namespace
                  "\"Parameters/...\"] entries;\ngive a case file to list them.\n\n"
               << material_library_documentation() << "\nClosed forms for Comparison/Checks:\n"
               << closed_forms::documentation();
-  }
-
-  void report_curved_boundaries(const CurvedEntities &curved)
-  {
-    if (!curved.exact.empty())
-      {
-        const char *names[] = {"circle", "cylinder", "sphere"};
-        unsigned int counts[3] = {0, 0, 0};
-        for (const auto &boundary : curved.exact)
-          ++counts[boundary.shape];
-        std::cout << "Curved boundaries:";
-        for (unsigned int s = 0; s < 3; ++s)
-          if (counts[s] > 0)
-            std::cout << " " << counts[s] << " " << names[s] << (counts[s] > 1 ? "s" : "");
-        std::cout << " follow the geometry; cells mapped at the element degree\n";
-      }
-    for (const auto &entity : curved.straightened)
-      std::cout << "Curved boundaries: " << entity
-                << " is neither circle, cylinder nor sphere: its faces stay straight\n";
-  }
-
-  // Meshing happens on rank 0; every rank gets the same mesh text, or the same error.
-  MeshedGeometry mesh_on_rank_zero(const CaseParameters &p, MPI_Comm comm)
-  {
-    MeshedGeometry geometry;
-    std::string    error;
-    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-      try
-        {
-          geometry = mesh_geometry(p.mesh_file, p.geometry_parameters);
-          if (!p.curved_boundaries)
-            geometry.curved = {};
-          report_curved_boundaries(geometry.curved);
-        }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
-    if (!error.empty())
-      throw InputError("case file '" + p.case_file + "', Geometry/Mesh file: " + error);
-    geometry.msh_text     = dealii::Utilities::MPI::broadcast(comm, geometry.msh_text, 0);
-    geometry.dimension    = dealii::Utilities::MPI::broadcast(comm, geometry.dimension, 0);
-    geometry.boundary_ids = dealii::Utilities::MPI::broadcast(comm, geometry.boundary_ids, 0);
-    geometry.material_ids = dealii::Utilities::MPI::broadcast(comm, geometry.material_ids, 0);
-    geometry.n_cells      = dealii::Utilities::MPI::broadcast(comm, geometry.n_cells, 0);
-    geometry.curved       = dealii::Utilities::MPI::broadcast(comm, geometry.curved, 0);
-    return geometry;
   }
 
   // Errors are agreed on over a communicator of their own: a failing rank enters a
@@ -137,7 +86,7 @@ int main(int argc, char **argv)
       if (p.case_file.empty())
         throw InputError("no case file given (try --help)");
       check_output_directory(p, comm);
-      const MeshedGeometry geometry = mesh_on_rank_zero(p, comm);
+      const MeshedGeometry geometry = mesh_case_geometry(p, comm);
       // Fault injection for the rank-failure test: one rank throws, the others go on.
       if (const char *rank = std::getenv("COMPLIANT_TEST_FAIL_RANK");
           rank != nullptr && std::to_string(dealii::Utilities::MPI::this_mpi_process(comm)) == rank)

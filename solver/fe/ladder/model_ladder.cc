@@ -14,6 +14,7 @@
 #include <closed_forms/registry.h>
 #include "ladder/adaptive_refinement.h"
 #include "ladder/error_estimate.h"
+#include "ladder/paired_model.h"
 #include "mesh/memory_estimate.h"
 #include "output/field_output.h"
 #include "output/summary.h"
@@ -27,6 +28,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace compliant
@@ -76,6 +78,17 @@ namespace compliant
     prm.declare_entry("Refined cell fraction", "0.3", Patterns::Double(0.01, 1),
                       "Adaptive refinement: the fraction of cells refined per rung (largest "
                       "indicators first).");
+    prm.declare_entry("Paired model", "", Patterns::Anything(),
+                      "Rung (b) across dimensions: the case file of the same part in the other "
+                      "dimension, 'case.prm[: Section/Entry=expression, ...]' (next to this case; "
+                      "the expressions over this case's geometry parameters and thickness; "
+                      "same-named geometry parameters carry over). A 3D case names its plane-stress "
+                      "model: the ladder climbs it first and stops there when its out-of-plane bound "
+                      "plus its discretization estimate meet the target, else climbs the 3D case. A "
+                      "plane-stress case names its 3D part: the ladder climbs the 3D case when the "
+                      "bound misses. Both must report the target quantities under the same names and "
+                      "have the same volume (2D: area times Material/Thickness). Empty: the "
+                      "dimension stays as Model sets it.");
     prm.leave_subsection();
   }
 
@@ -91,6 +104,7 @@ namespace compliant
     t.automatic           = prm.get("Refinement") == "auto";
     t.refined_fraction    = prm.get_double("Refined cell fraction");
     t.closed_forms        = prm.get_bool("Closed forms");
+    t.paired_model        = prm.get("Paired model");
     for (auto name : split(prm.get("Quantities"), ','))
       {
         name.erase(0, name.find_first_not_of(" \t"));
@@ -146,7 +160,7 @@ namespace compliant
   } // namespace
 
   template <int dim>
-  int run_model_ladder(const RunContext &context, const TargetSettings &target)
+  int run_model_ladder(const RunContext &context, const TargetSettings &target, DimensionVerdict *verdict)
   {
     const auto &p    = context.parameters;
     const bool  root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
@@ -259,8 +273,23 @@ namespace compliant
         }
       std::cout << "; " << rung.decision << std::endl;
     };
+    // (b) across dimensions: the other dimension's model of the same part, read (and checked)
+    // before anything is solved.
+    std::optional<PairedModel> paired;
+    if (!target.paired_model.empty())
+      paired = read_paired_model(p, context.geometry, target.paired_model, context.communicator);
+    // A plane-stress climb standing for a 3D part: its out-of-plane bound takes its share of the
+    // target, and the climb gives way to the 3D model when the bound alone misses it.
+    const bool stand_in = target.stand_in_for_3d || (dim == 2 && paired);
+    const auto paired_target = [&]() {
+      TargetSettings t = target;
+      t.paired_model.clear();
+      t.quantities = names;
+      return t;
+    };
     if (root)
-      std::cout << "Model ladder: target " << percent(target.relative_error) << " on";
+      std::cout << "Model ladder" << (target.stand_in_for_3d ? " (plane-stress model of the 3D part)" : "")
+                << ": target " << percent(target.relative_error) << " on";
     for (const auto &n : names)
       if (root)
         std::cout << ' ' << n;
@@ -312,10 +341,13 @@ namespace compliant
                   why = check.formula + " has no error bound";
                   continue;
                 }
-              if (std::find(result.bound_models.begin(), result.bound_models.end(), p.model) ==
+              // A plane-stress model paired with its 3D part answers for the part.
+              const std::string part_model = dim == 2 && paired ? std::string("3d") : p.model;
+              if (std::find(result.bound_models.begin(), result.bound_models.end(), part_model) ==
                   result.bound_models.end())
                 {
-                  why = check.formula + "'s bound does not hold for Model = " + p.model;
+                  why = check.formula + "'s bound does not hold for Model = " + part_model +
+                        (part_model != p.model ? " (the 3D part this model stands for)" : "");
                   continue;
                 }
               const Answer answer{check.formula, result.error_bound_basis, result.value, result.error_bound};
@@ -385,9 +417,34 @@ namespace compliant
     }
     // (b) A plane-stress model is checked against the 3D solid it stands for on every rung (the
     // energy bound of quantities/out_of_plane_bound.h); the last rung's bound is reported.
-    double      out_of_plane = -1; // relative, < 0: not computed
-    std::string dimension_reason;
-    if (p.model != "plane stress" && root)
+    double      out_of_plane = target.dimension_bound; // relative, < 0: not computed
+    std::string dimension_reason = target.dimension_note;
+    if constexpr (dim == 3)
+      if (paired && !context.check_only)
+        {
+          // The plane-stress model first: it stops the climb when 2D is enough.
+          if (root)
+            std::cout << "  (b) the plane-stress model " << paired->parameters.case_file
+                      << " first: it answers for this 3D part when its out-of-plane bound plus its "
+                         "discretization estimate meet the target\n" << std::endl;
+          TargetSettings t  = paired_target();
+          t.stand_in_for_3d = true;
+          t.closed_forms    = false; // rung (a) has been tried on the 3D part
+          const RunContext plane{paired->parameters, *paired->prm, paired->geometry, false, context.communicator};
+          DimensionVerdict found;
+          const int        rc = run_model_ladder<2>(plane, t, &found);
+          if (rc != needs_3d_model)
+            return rc;
+          dimension_reason = found.reason;
+          out_of_plane     = found.bound;
+          if (root)
+            std::cout << "\nModel ladder, back to the 3D part " << p.case_file << "\n";
+        }
+    if (paired && context.check_only && root)
+      std::cout << "  (b) paired model " << paired->parameters.case_file << " read and meshed: the same part\n";
+    else if (dim == 3 && !dimension_reason.empty() && root)
+      std::cout << "  (b) 3D: " << dimension_reason << "\n";
+    else if (p.model != "plane stress" && root)
       std::cout << "  (b) dimension as set by Model = " << p.model
                 << (p.model == "3d" ? "" : " (no out-of-plane bound for plane strain: it stands for a part "
                                            "long in z or held at its z faces)")
@@ -482,7 +539,9 @@ namespace compliant
             rung.stop_estimates[n] = stop_estimate(n, e, target.adaptive || degree_rungs);
             met = met && rung.stop_estimates[n] >= 0 && rung.stop_estimates[n] <= target.relative_error;
           }
+        std::string needs_3d; // why this plane-stress model cannot stand for its 3D part
         if constexpr (dim == 2)
+          {
           if (p.model == "plane stress" && !model.problem->mixed)
             {
               const auto   bound  = plane_stress_out_of_plane_bound(*model.problem);
@@ -493,15 +552,32 @@ namespace compliant
               why << "plane stress against the 3D solid of thickness " << model.problem->thickness
                   << ": |U_3D - U| <= " << percent(out_of_plane)
                   << " of U (energy bound; it holds for the strain energy and the stiffness of a single "
-                     "load or drive)"
-                  << (out_of_plane <= target.relative_error ?
-                        " <= target: 2D is enough" :
-                        " > target: the 3D part may differ from this 2D model by more than the target; "
-                        "model it in 3D (Model = 3d) to meet the target against the solid");
+                     "load or drive)";
+              if (stand_in)
+                why << (out_of_plane < target.relative_error ?
+                          " < target: 2D stands for the 3D part while its discretization estimate stays "
+                          "below the rest of the target, " + percent(target.relative_error - out_of_plane) :
+                          " >= target: the 3D part may differ from this 2D model by more than the "
+                          "target; climbing the 3D model");
+              else
+                why << (out_of_plane <= target.relative_error ?
+                          " <= target: 2D is enough" :
+                          " > target: the 3D part may differ from this 2D model by more than the target; "
+                          "model it in 3D (Model = 3d, or name it in Target/Paired model) to meet the "
+                          "target against the solid");
               dimension_reason = why.str();
               if (k == 0 && root)
                 std::cout << "  (b) " << dimension_reason << "\n";
+              if (stand_in && out_of_plane >= target.relative_error)
+                needs_3d = "out-of-plane bound " + percent(out_of_plane) + " >= target";
+              else if (stand_in)
+                // The bound takes its share: estimate + bound must meet the target.
+                for (const auto &n : names)
+                  met = met && rung.stop_estimates[n] + out_of_plane <= target.relative_error;
             }
+          else if (stand_in)
+            needs_3d = dimension_reason = "no out-of-plane bound for the mixed formulation";
+          }
         if (k == 0)
           {
             // (c) the geometric error of the linear answer, of order theta^2.
@@ -520,6 +596,38 @@ namespace compliant
             finite_strain = finite_strain && target.allow_finite_strain;
             if (root)
               std::cout << "  (c) " << geometric_reason << "\n";
+            if (finite_strain && stand_in && needs_3d.empty())
+              {
+                // The out-of-plane bound is one of linear elasticity.
+                needs_3d = dimension_reason = "finite strain needed, and the out-of-plane bound that "
+                                              "justifies 2D holds for linear models only";
+                finite_strain = false;
+              }
+          }
+        if (!needs_3d.empty())
+          {
+            met           = false;
+            rung.decision = "the plane-stress model cannot stand for the 3D part (" + needs_3d + ")";
+            rung.seconds  = rung_timer.wall_time();
+            print_rung(rung);
+            if (target.stand_in_for_3d)
+              {
+                if (verdict != nullptr)
+                  *verdict = {dimension_reason, out_of_plane};
+                return needs_3d_model;
+              }
+            if constexpr (dim == 2)
+              {
+                // This case is the plane-stress model; its 3D part climbs now and writes the results.
+                if (root)
+                  std::cout << "\nModel ladder, on to the 3D part " << paired->parameters.case_file << "\n";
+                TargetSettings t  = paired_target();
+                t.dimension_note  = dimension_reason;
+                t.dimension_bound = out_of_plane;
+                const RunContext solid{paired->parameters, *paired->prm, paired->geometry, false,
+                                       context.communicator};
+                return run_model_ladder<3>(solid, t);
+              }
           }
         if (finite_strain)
           {
@@ -746,6 +854,6 @@ namespace compliant
     return met ? 0 : 4;
   }
 
-  template int run_model_ladder<2>(const RunContext &, const TargetSettings &);
-  template int run_model_ladder<3>(const RunContext &, const TargetSettings &);
+  template int run_model_ladder<2>(const RunContext &, const TargetSettings &, DimensionVerdict *);
+  template int run_model_ladder<3>(const RunContext &, const TargetSettings &, DimensionVerdict *);
 } // namespace compliant

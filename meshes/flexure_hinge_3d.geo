@@ -1,0 +1,51 @@
+// A flexure hinge between two thick links, 3D: the section of flexure_hinge_2d.geo extruded along z
+// over the width b, centred on z = 0 (the 2D model's Material/Thickness). The flexure (length l,
+// thickness t) runs along x from 0 to l, centred on y = 0; each link is Ll long and T thick.
+// Boundaries: base (left end face of the left link), drive (right end face of the right link).
+// Body: body. Cells: hexahedra, structured block by block, nb layers across the width.
+DefineConstant[ l = {10, Name "Parameters/l", Help "flexure length"} ];
+DefineConstant[ t = {1, Name "Parameters/t", Help "flexure thickness (bending depth)"} ];
+DefineConstant[ Ll = {20, Name "Parameters/Ll", Help "length of each link"} ];
+DefineConstant[ T = {10, Name "Parameters/T", Help "link thickness"} ];
+DefineConstant[ nt = {2, Name "Parameters/nt", Help "elements through the flexure thickness"} ];
+DefineConstant[ b = {5, Name "Parameters/b", Help "width along z (the 2D model's thickness)"} ];
+DefineConstant[ nb = {2, Name "Parameters/nb", Help "elements across the width"} ];
+// Cells about square in the flexure; the links are meshed coarser.
+nl = Ceil(nt * l / t);
+nT = Ceil(nt * (T - t) / (2 * t) / 4) + 1;
+nL = Ceil(nt * Ll / T) + 1;
+// x stations and y stations of a 3 x 3 block grid (left link, flexure, right link)
+xs[] = {-Ll, 0, l, l + Ll};
+ys[] = {-T/2, -t/2, t/2, T/2};
+For i In {0:3}
+  For j In {0:3}
+    Point(10 * i + j + 1) = {xs[i], ys[j], -b/2};
+  EndFor
+EndFor
+s = 0;
+For i In {0:2}
+  For j In {0:2}
+    // only the middle row exists in the flexure column (i = 1)
+    If (i != 1 || j == 1)
+      p1 = 10 * i + j + 1; p2 = 10 * (i + 1) + j + 1; p3 = p2 + 1; p4 = p1 + 1;
+      s += 1;
+      lines[] = {};
+      Line(100 * s + 1) = {p1, p2}; Line(100 * s + 2) = {p2, p3};
+      Line(100 * s + 3) = {p3, p4}; Line(100 * s + 4) = {p4, p1};
+      Curve Loop(s) = {100 * s + 1, 100 * s + 2, 100 * s + 3, 100 * s + 4};
+      Plane Surface(s) = {s};
+      nxi = (i == 1) ? nl : nL;
+      nyj = (j == 1) ? nt : nT;
+      Transfinite Curve{100 * s + 1, 100 * s + 3} = nxi + 1;
+      Transfinite Curve{100 * s + 2, 100 * s + 4} = nyj + 1;
+      Transfinite Surface{s}; Recombine Surface{s};
+    EndIf
+  EndFor
+EndFor
+Coherence;
+Extrude {0, 0, b} { Surface{1:s}; Layers{nb}; Recombine; }
+Coherence;
+e = 1e-6 * (l + 2 * Ll);
+Physical Surface("base") = Surface In BoundingBox{-Ll - e, -T, -b, -Ll + e, T, b};
+Physical Surface("drive") = Surface In BoundingBox{l + Ll - e, -T, -b, l + Ll + e, T, b};
+Physical Volume("body") = Volume{:};

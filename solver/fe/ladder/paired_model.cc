@@ -1,0 +1,140 @@
+#include "ladder/paired_model.h"
+
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+
+#include "input/case_geometry.h"
+#include "input/expression.h"
+#include "input/spec_list.h"
+#include "mesh/mesh_reader.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace compliant
+{
+  namespace
+  {
+    template <int dim>
+    double mesh_volume(const MeshedGeometry &geometry)
+    {
+      dealii::Triangulation<dim> triangulation;
+      create_triangulation(triangulation, geometry, 0);
+      return dealii::GridTools::volume(triangulation);
+    }
+
+    // The part's volume on the unrefined, straight-sided mesh: a 2D area times the thickness.
+    double part_volume(const CaseParameters &p, const MeshedGeometry &geometry)
+    {
+      return geometry.dimension == 3 ? mesh_volume<3>(geometry) : mesh_volume<2>(geometry) * p.thickness;
+    }
+
+    std::string trimmed(std::string s)
+    {
+      s.erase(0, s.find_first_not_of(" \t"));
+      s.erase(s.find_last_not_of(" \t") + 1);
+      return s;
+    }
+  } // namespace
+
+  PairedModel read_paired_model(const CaseParameters &primary, const MeshedGeometry &primary_geometry,
+                                const std::string &spec, MPI_Comm communicator)
+  {
+    const std::string where = "case file '" + primary.case_file + "', Target/Paired model";
+    const auto        colon = spec.find(':');
+    const std::string file  = trimmed(spec.substr(0, colon));
+    if (file.empty())
+      throw InputError(where + ": expected 'case.prm[: Section/Entry=expression, ...]', got '" + spec + "'");
+    const auto        slash     = primary.case_file.rfind('/');
+    const std::string case_dir  = slash == std::string::npos ? "." : primary.case_file.substr(0, slash);
+    const std::string path      = file[0] == '/' || std::ifstream(case_dir + "/" + file).fail() ? file :
+                                                                                                  case_dir + "/" + file;
+    if (std::ifstream(path).fail())
+      throw InputError(where + ": cannot read '" + file + "' (looked next to the case and in the working "
+                       "directory)");
+
+    // Same-named geometry parameters follow the primary; then the spec's own entries.
+    std::map<std::string, double> variables = primary.geometry_parameters;
+    variables["thickness"]                  = primary.dimension == 2 ? primary.thickness : 1.0;
+    CommandLine command_line;
+    command_line.case_file = path;
+    try
+      {
+        dealii::ParameterHandler first;
+        const auto               plain = read_case(command_line, first);
+        for (const auto &[name, value] : plain.geometry_parameters)
+          if (primary.geometry_parameters.count(name))
+            command_line.overrides.push_back("Geometry/Parameters/" + name + "=" +
+                                             round_trip_text(primary.geometry_parameters.at(name)));
+      }
+    catch (const InputError &e)
+      {
+        throw InputError(where + " '" + spec + "': " + e.what());
+      }
+    if (colon != std::string::npos)
+      for (const auto &item : split(spec.substr(colon + 1), ','))
+        {
+          const auto entry = trimmed(item);
+          if (entry.empty())
+            continue;
+          const auto equals = entry.find('=');
+          if (equals == std::string::npos || trimmed(entry.substr(0, equals)).empty())
+            throw InputError(where + ": expected 'Section/Entry=expression', got '" + entry + "'");
+          double value;
+          try
+            {
+              value = evaluate_expression(entry.substr(equals + 1), variables, "Target/Paired model");
+            }
+          catch (const std::invalid_argument &e)
+            {
+              throw InputError("case file '" + primary.case_file + "': " + e.what());
+            }
+          command_line.overrides.push_back(trimmed(entry.substr(0, equals)) + "=" + round_trip_text(value));
+        }
+
+    PairedModel paired;
+    paired.prm = std::make_unique<dealii::ParameterHandler>();
+    try
+      {
+        paired.parameters = read_case(command_line, *paired.prm);
+      }
+    catch (const InputError &e)
+      {
+        // The entries set from the spec look like --set ones to the reader: say where they came from.
+        throw InputError(where + " '" + spec + "': " + e.what());
+      }
+    auto &q           = paired.parameters;
+    if (q.analysis != "linear static")
+      throw InputError(where + ": '" + path + "' runs Analysis = " + q.analysis +
+                       "; expected linear static (the ladder climbs linear static cases)");
+    if (q.dimension == primary.dimension)
+      throw InputError(where + ": '" + path + "' is a " + std::to_string(q.dimension) +
+                       "D model like the case itself; expected the " + (primary.dimension == 3 ? "2D" : "3D") +
+                       " model of the same part");
+    const auto &plane = primary.dimension == 2 ? primary : q;
+    if (plane.model != "plane stress")
+      throw InputError(where + ": the 2D model ('" + plane.case_file + "') has Model = " + plane.model +
+                       "; expected plane stress (the out-of-plane bound that justifies 2D exists for "
+                       "plane stress only)");
+    q.output_directory = primary.output_directory;
+    q.write_fields     = primary.write_fields;
+    paired.geometry    = mesh_case_geometry(q, communicator);
+
+    // The two models must describe one part: the same volume, up to the chords of coarse curved
+    // boundaries.
+    const double v_primary = part_volume(primary, primary_geometry), v_paired = part_volume(q, paired.geometry);
+    if (!(std::abs(v_primary - v_paired) <= 0.02 * std::max(v_primary, v_paired)))
+      {
+        std::ostringstream s;
+        s << where << ": '" << path << "' does not describe the same part: volume " << v_paired
+          << " (" << (q.dimension == 2 ? "area times Material/Thickness" : "3D mesh") << ") against "
+          << v_primary << " of the case (" << (primary.dimension == 2 ? "area times Material/Thickness" : "3D mesh")
+          << "); expected equal within 2 % (set the paired entries in the spec, e.g. "
+          << "'case.prm: Material/Thickness=W')";
+        throw InputError(s.str());
+      }
+    return paired;
+  }
+} // namespace compliant
