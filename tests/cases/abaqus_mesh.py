@@ -21,15 +21,9 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(root, "postproc"))
 from study import mpi_env, run_case, solver_path  # noqa: E402
+from case_checks import check, finish  # noqa: E402
 
 scratch = tempfile.mkdtemp(prefix="compliant-inp-")
-failures = []
-
-
-def check(ok, what):
-    print(("PASS  " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def relative(a, b):
@@ -140,5 +134,4 @@ for name, (text, words) in bad.items():
     check(all(w in text_out for w in words), name + ": message names " + ", ".join(words))
     check("Stacktrace" not in text_out and not os.path.exists(out), name + ": no stack dump, nothing written")
 
-print("%d failed" % len(failures))
-sys.exit(1 if failures else 0)
+finish()

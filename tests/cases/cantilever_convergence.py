@@ -23,15 +23,9 @@ here = os.path.dirname(os.path.abspath(__file__))
 cases = os.path.join(here, "..", "..", "cases", "verification")
 sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
 from study import run_case  # noqa: E402
+from case_checks import check, finish  # noqa: E402
 
 model = sys.argv[1]
-failed = []
-
-
-def check(ok, text):
-    print(("PASS  " if ok else "FAIL  ") + text)
-    if not ok:
-        failed.append(text)
 
 
 def comparison(summary, formula):
@@ -82,4 +76,4 @@ for degree in (1, 2):
     else:
         check(abs(ratio - 1) < 0.02, "degree 2 does not lock: |FE/EB - 1| = %.4f < 0.02" % abs(ratio - 1))
 
-sys.exit(1 if failed else 0)
+finish()

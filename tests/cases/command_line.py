@@ -4,27 +4,20 @@ code), --check validates without output, --set overrides, and each kind of bad i
 message naming the file/parameter, a non-zero exit and no output folder."""
 import os
 import subprocess
-import sys
 import tempfile
 import time
+from case_checks import check, finish
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.join(here, "..", "..")
 solver = os.environ["COMPLIANT_SOLVER"]
 case = os.path.join(root, "cases", "flexure_hinge.prm")
-failed = []
 
 
 def run(args, np=2):
     cmd = ["mpirun", "-np", str(np), solver] + args
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
     return p.returncode, p.stdout, p.stderr
-
-
-def check(ok, text):
-    print(("PASS  " if ok else "FAIL  ") + text)
-    if not ok:
-        failed.append(text)
 
 
 rc, out, err = run(["--help"], np=1)
@@ -91,4 +84,4 @@ bad("plane stress with the mixed formulation", [case, "--set", "Analysis=nonline
 bad("follower pressure on an unknown boundary", [case, "--set", "Analysis=nonlinear static",
     "--set", "Finite strain/Follower pressure=nowhere: 1"], ["Follower pressure", "nowhere"])
 bad("missing case file", [os.path.join(root, "cases", "no_such_case.prm")], ["no_such_case.prm"])
-sys.exit(1 if failed else 0)
+finish()

@@ -22,15 +22,9 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
 from study import run_case  # noqa: E402
+from case_checks import check, finish  # noqa: E402
 
 cases = sys.argv[1]
-failures = []
-
-
-def check(ok, text):
-    print(("PASS " if ok else "FAIL ") + text)
-    if not ok:
-        failures.append(text)
 
 
 beam = os.path.join(cases, "verification", "cantilever_3d.prm")
@@ -123,5 +117,4 @@ except RuntimeError as e:
     check("did not converge" in str(e) and "Method = direct" in str(e),
           "explicit matrix-free that cannot converge fails with advice: %s" % str(e).splitlines()[-1][:160])
 
-print("FAIL" if failures else "PASS")
-sys.exit(1 if failures else 0)
+finish()

@@ -17,16 +17,10 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
 from study import mpi_env, solver_path  # noqa: E402
+from case_checks import check, finish  # noqa: E402
 
 here = os.path.dirname(os.path.abspath(__file__))
 E, nu = 1e6, 0.25
-failures = []
-
-
-def check(ok, text):
-    print(("PASS " if ok else "FAIL ") + text)
-    if not ok:
-        failures.append(text)
 
 
 def expected(eps, plane_stress):
@@ -77,5 +71,4 @@ for name, case, eps, plane_stress in cases:
           "%s: fields.xdmf names the components for ParaView" % name)
     subprocess.run(["rm", "-rf", out])
 
-print("FAIL" if failures else "PASS")
-sys.exit(1 if failures else 0)
+finish()

@@ -14,14 +14,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 cases = os.path.join(here, "..", "..", "cases")
 sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
 from study import mpi_env, run_case, solver_path  # noqa: E402
-
-failed = []
-
-
-def check(ok, text):
-    print(("PASS  " if ok else "FAIL  ") + text)
-    if not ok:
-        failed.append(text)
+from case_checks import check, finish  # noqa: E402
 
 
 mode = sys.argv[1]
@@ -159,4 +152,4 @@ elif mode == "plane_stress_pressure":
         check(abs(plane[key] / slab[key] - 1) < 1e-3, "p = 100: plane stress and the thin 3D slab agree on %s to 1e-3" % key)
     per_step = plane["newton_iterations"] / plane["load_steps"]
     check(per_step <= 4, "plane stress: at most 4 Newton iterations per step (%.1f: the tangent is consistent)" % per_step)
-sys.exit(1 if failed else 0)
+finish()

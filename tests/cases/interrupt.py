@@ -17,15 +17,9 @@ import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
 from study import mpi_env, solver_path  # noqa: E402
+from case_checks import check, finish  # noqa: E402
 
 case = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "cases", "flexure_hinge_large_rotation.prm")
-failures = []
-
-
-def check(ok, text):
-    print(("PASS " if ok else "FAIL ") + text)
-    if not ok:
-        failures.append(text)
 
 
 def interrupted_run(name, launcher, sig, expected_code):
@@ -73,4 +67,4 @@ def interrupted_run(name, launcher, sig, expected_code):
 interrupted_run("solver alone, SIGTERM", [], signal.SIGTERM, 128 + signal.SIGTERM)
 interrupted_run("solver alone, SIGINT", [], signal.SIGINT, 128 + signal.SIGINT)
 interrupted_run("mpirun -np 2, SIGTERM", ["mpirun", "-np", "2"], signal.SIGTERM, None)
-sys.exit(1 if failures else 0)
+finish()

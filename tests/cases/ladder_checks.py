@@ -31,15 +31,9 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
 from study import mpi_env, solver_path  # noqa: E402
+from case_checks import check, finish  # noqa: E402
 
 cases = sys.argv[1]
-failures = []
-
-
-def check(ok, text):
-    print(("PASS " if ok else "FAIL ") + text)
-    if not ok:
-        failures.append(text)
 
 
 def ladder(case, sets):
@@ -230,5 +224,4 @@ proc, summary, rows = ladder(cantilever, ["Target/Relative error=0.5", "Target/Q
 check(proc.returncode == 0 and len(rows) >= 3 and "bound" in proc.stdout and "> target" in proc.stdout,
       "stocky cantilever (L/h = 10): the bound misses the target, said, and the FE rungs climb")
 
-print("FAIL" if failures else "PASS")
-sys.exit(1 if failures else 0)
+finish()

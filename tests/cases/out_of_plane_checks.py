@@ -30,15 +30,9 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
 from study import mpi_env, solver_path  # noqa: E402
+from case_checks import check, finish  # noqa: E402
 
 cases = sys.argv[1]
-failures = []
-
-
-def check(ok, text):
-    print(("PASS " if ok else "FAIL ") + text)
-    if not ok:
-        failures.append(text)
 
 
 def run_any(case, sets):
@@ -119,5 +113,4 @@ proc, summary = run_any("cantilever_3d.prm", target + ["Target/Paired model=cant
 check(proc.returncode == 2 and "Target/Paired model" in proc.stderr and "same part" in proc.stderr and summary is None,
       "a pair that is not the same part is refused with exit 2, naming the entry, no output: " + proc.stderr.strip()[:160])
 
-print("%d failure(s)" % len(failures))
-sys.exit(1 if failures else 0)
+finish()

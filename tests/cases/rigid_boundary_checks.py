@@ -3,7 +3,6 @@
 
     rigid_boundary_checks.py linear_3d | small_load | ranks
 """
-import math
 import os
 import sys
 
@@ -11,14 +10,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 cases = os.path.join(here, "..", "..", "cases")
 sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
 from study import run_case  # noqa: E402
-
-failed = []
-
-
-def check(ok, text):
-    print(("PASS  " if ok else "FAIL  ") + text)
-    if not ok:
-        failed.append(text)
+from case_checks import check, finish  # noqa: E402
 
 
 bar = os.path.join(cases, "verification", "cantilever_3d.prm")
@@ -92,4 +84,4 @@ elif mode == "ranks":
 else:
     sys.exit("unknown mode " + mode)
 
-sys.exit(1 if failed else 0)
+finish()

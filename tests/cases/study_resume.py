@@ -14,19 +14,12 @@ import signal
 import subprocess
 import sys
 import tempfile
-import time
+from case_checks import check, finish
 
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 study = [sys.executable if os.path.basename(sys.executable).startswith("python") else "/usr/bin/python3",
          os.path.join(root, "postproc", "study.py")]
 case = os.path.join(root, "cases", "flexure_hinge.prm")
-failures = []
-
-
-def check(ok, text):
-    print(("PASS " if ok else "FAIL ") + text)
-    if not ok:
-        failures.append(text)
 
 
 def table(out):
@@ -106,5 +99,4 @@ check(p.returncode == 0 and "(resumed)" in p2.stdout and len(table(array)) == 2,
       "--point 1 runs one point; the collecting run resumes it and runs the other")
 
 subprocess.run(["rm", "-rf", base])
-print("FAIL" if failures else "PASS")
-sys.exit(1 if failures else 0)
+finish()

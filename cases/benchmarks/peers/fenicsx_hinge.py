@@ -5,10 +5,8 @@ degree 2, E = 1000, nu = 0.3, clamped at x = 0, the end x = 24 turned rigidly by
 z axis through (12, 0) (the exact rotation, as ours). CG + GAMG with block size and rigid-body modes,
 relative tolerance 1e-10. QoI: strain energy. One JSON line on rank 0.
 Run: mpirun -np 2 /usr/bin/python3 fenicsx_hinge.py M"""
-import json
 import math
 import os
-import resource
 import sys
 import time
 
@@ -16,7 +14,6 @@ t_start = time.perf_counter()
 import numpy as np  # noqa: E402
 import ufl  # noqa: E402
 from dolfinx import fem, mesh  # noqa: E402
-from dolfinx.fem.petsc import LinearProblem  # noqa: E402
 from mpi4py import MPI  # noqa: E402
 from petsc4py import PETSc  # noqa: E402
 
@@ -24,7 +21,7 @@ m = int(sys.argv[1])
 comm = MPI.COMM_WORLD
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import hinge_mesh  # noqa: E402
-from fenicsx_common import GAMG_OPTIONS, rigid_body_near_null_space  # noqa: E402
+from fenicsx_common import solve_and_report_energy  # noqa: E402
 
 # Rank 0 gives every cell (dolfinx's tensor-product vertex order), create_mesh partitions them.
 xs, ys, zs, cell_list = hinge_mesh.grid(m)
@@ -39,19 +36,8 @@ domain = mesh.create_mesh(comm, cells, points, ufl.Mesh(ufl.VectorElement("Lagra
 x_end = xs[-1]
 V = fem.VectorFunctionSpace(domain, ("Lagrange", 2))
 E, nu = 1000.0, 0.3
-mu, lmbda = E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))
 theta = math.radians(hinge_mesh.ANGLE_DEG)
 
-
-def eps(w):
-    return ufl.sym(ufl.grad(w))
-
-
-def sigma(w):
-    return 2 * mu * eps(w) + lmbda * ufl.tr(eps(w)) * ufl.Identity(3)
-
-
-u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
 clamped = fem.locate_dofs_geometrical(V, lambda x: np.isclose(x[0], 0.0))
 turned = fem.locate_dofs_geometrical(V, lambda x: np.isclose(x[0], x_end))
 rotation = fem.Function(V)
@@ -60,16 +46,4 @@ rotation.interpolate(lambda x: np.vstack(((x[0] - cx) * (math.cos(theta) - 1) - 
                                           (x[0] - cx) * math.sin(theta) + (x[1] - cy) * (math.cos(theta) - 1),
                                           0 * x[0])))
 bcs = [fem.dirichletbc(np.zeros(3, dtype=PETSc.ScalarType), clamped, V), fem.dirichletbc(rotation, turned)]
-zero = fem.Constant(domain, PETSc.ScalarType((0.0, 0.0, 0.0)))
-problem = LinearProblem(ufl.inner(sigma(u), eps(v)) * ufl.dx, ufl.inner(zero, v) * ufl.dx, bcs=bcs,
-                        petsc_options=GAMG_OPTIONS)
-index_map, bs = V.dofmap.index_map, V.dofmap.index_map_bs
-problem.A.setNearNullSpace(rigid_body_near_null_space(V))
-t_solve = time.perf_counter()
-uh = problem.solve()
-t_end = time.perf_counter()
-energy = comm.allreduce(fem.assemble_scalar(fem.form(0.5 * ufl.inner(sigma(uh), eps(uh)) * ufl.dx)), op=MPI.SUM)
-memory = comm.allreduce(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0, op=MPI.MAX)
-if comm.rank == 0:
-    print(json.dumps({"dofs": index_map.size_global * bs, "qoi": energy, "solve_s": t_end - t_solve,
-                      "iterations": problem.solver.getIterationNumber(), "memory_mb": memory}))
+solve_and_report_energy(V, E, nu, bcs)
