@@ -22,6 +22,7 @@ Across dimensions (Target/Paired model, ladder/paired_model.h), each against the
   - a pair that is not the same part (thickness 1 against W = 10) is refused: exit 2, a message
     naming Target/Paired model and both volumes, and no summary written.
 """
+import csv
 import json
 import os
 import subprocess
@@ -42,6 +43,8 @@ def run_any(case, sets):
     proc = subprocess.run(cmd, capture_output=True, text=True, env=mpi_env())
     path = os.path.join(out, "summary.json")
     summary = json.load(open(path)) if os.path.exists(path) else None
+    ladder = os.path.join(out, "ladder.csv")
+    proc.ladder_rows = list(csv.DictReader(open(ladder))) if os.path.exists(ladder) else []
     subprocess.run(["rm", "-rf", out])
     return proc, summary
 
@@ -89,6 +92,25 @@ print("W = 1, 3D case paired with plane stress: %s, %.8g, error against the soli
 check(proc.returncode == 0 and summary["case"].endswith("cantilever_2d.prm"),
       "W = 1: the 3D case stops at its plane-stress model")
 check(error <= 0.005 and error <= allowed, "W = 1: the 2D answer is within the target and bound + estimate of the solid")
+check(abs(q.get("mean_displacement_right_y_error_estimate_against_3d", 0) - (allowed - 6e-4)) < 1e-12,
+      "W = 1: summary.json gives the error estimate against the 3D part, estimate + bound")
+
+# A target below the first rung's bound (0.24 %) but above the converged one (0.13 %): the bound
+# tightens on the 2D rungs and 2D is kept.
+proc, summary = run_any("cantilever_3d.prm", ["Target/Relative error=0.15", pair_2d, "Geometry/Parameters/W=1",
+                                              "Geometry/Parameters/nz=1"])
+u = summary["quantities"]["mean_displacement_right_y"] if summary else 0
+error = abs(u - solid_reference[1]) / abs(solid_reference[1])
+print("W = 1, target 0.15 %%: %s, error against the solid %.3f %%" % (summary["case"] if summary else "-", 100 * error))
+check(proc.returncode == 0 and summary["case"].endswith("cantilever_2d.prm") and error <= 0.0015,
+      "W = 1, target 0.15 %: the bound tightens below the target on finer 2D rungs, 2D kept and within 0.15 %")
+
+# The case's --set materials carry over to its pair: half the modulus, twice the deflection.
+proc, softer = run_any("cantilever_3d.prm", target + [pair_2d, "Geometry/Parameters/W=1", "Geometry/Parameters/nz=1",
+                                                       "Material/Materials=*: steel, E=100000, nu=0.3"])
+ratio = softer["quantities"]["mean_displacement_right_y"] / u if softer else 0
+check(proc.returncode == 0 and abs(ratio - 2) < 1e-3,
+      "--set Material/Materials of the case reaches its plane-stress model (deflection ratio %.6f)" % ratio)
 
 proc, summary = run_any("cantilever_3d.prm", target + [pair_2d])
 q = summary["quantities"] if summary else {}
@@ -99,6 +121,9 @@ check(proc.returncode == 0 and summary["case"].endswith("cantilever_3d.prm") and
       q.get("out_of_plane_bound", 0) > 0.005 and "ladder_dimension_check" in summary["settings"],
       "W = 10: the 3D case climbs its own model, with the plane-stress bound that sent it there")
 check(error <= 0.005, "W = 10: the 3D answer meets the target against the solid")
+models = [r["model"] for r in proc.ladder_rows]
+check(models[:1] == ["plane stress linear"] and len(models) == q.get("ladder_rungs") and "linear" in models[1:],
+      "W = 10: ladder.csv and ladder_rungs hold the abandoned plane-stress rung and the 3D rungs (%s)" % models)
 
 proc, summary = run_any("cantilever_2d.prm", target + [
     "Material/Thickness=40", "Target/Paired model=cantilever_3d.prm: Geometry/Parameters/W=thickness, Geometry/Parameters/nz=8"])

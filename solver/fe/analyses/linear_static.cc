@@ -2,6 +2,7 @@
 
 #include "analyses/linear_static_model.h"
 #include "ladder/model_ladder.h"
+#include "ladder/paired_model.h"
 #include "output/field_output.h"
 
 namespace compliant
@@ -17,6 +18,15 @@ namespace compliant
         return run_model_ladder<dim>(context, target);
 
       const auto &p     = context.parameters;
+      if (!target.paired_model.empty())
+        {
+          // Only the ladder reads the pair; --check still validates it.
+          if (context.check_only)
+            read_paired_model(p, context.geometry, target.paired_model, context.communicator);
+          if (dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0)
+            std::cout << "Target/Paired model is read by the model ladder only (Target/Relative error "
+                         "= 0 here): this run solves " << p.case_file << " as set\n";
+        }
       auto        model = solve_linear_static_model<dim>(context, p);
       if (model.stopped_for_check)
         return 0;

@@ -472,6 +472,7 @@ namespace compliant
   {
     CaseParameters p;
     p.case_file       = command_line.case_file;
+    p.overrides       = command_line.overrides;
     const auto parsed = read_parameter_file(command_line, prm, declare_case_parameters);
     if (p.case_file.empty())
       return p;

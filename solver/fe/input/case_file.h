@@ -21,7 +21,8 @@ namespace compliant
 
   struct CaseParameters
   {
-    std::string case_file;
+    std::string              case_file;
+    std::vector<std::string> overrides; // the --set entries it was read with, "Section/Name=value"
     std::string model; // "plane stress", "plane strain", "3d"
     int         dimension = 2;
     std::string analysis;

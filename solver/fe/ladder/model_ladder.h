@@ -23,6 +23,15 @@
 
 namespace compliant
 {
+  // One rung's line of ladder.csv without its number and cumulative time: the columns before
+  // (model ... seconds) and after (values and estimates) them.
+  struct LadderRow
+  {
+    std::string head;
+    double      seconds = 0;
+    std::string tail;
+  };
+
   struct TargetSettings
   {
     double                   relative_error = 0; // fraction (the case gives percent)
@@ -40,13 +49,17 @@ namespace compliant
     bool        stand_in_for_3d = false; // a plane-stress climb that gives way to the 3D part
     std::string dimension_note;          // why the 3D part is climbed: for its summary
     double      dimension_bound = -1;    // the plane-stress model's out-of-plane bound, if computed
+    std::string pair_of;                 // the case whose target this climb answers, if another
+    std::vector<LadderRow> earlier_rows; // rungs of the plane-stress model, before this climb's
+    double                 earlier_seconds = 0; // their time, when not inside this climb's own
   };
 
   // What a plane-stress climb standing in for a 3D part found when it gave way to the 3D model.
   struct DimensionVerdict
   {
-    std::string reason;
-    double      bound = -1;
+    std::string            reason;
+    double                 bound = -1;
+    std::vector<LadderRow> rows; // the plane-stress model's rungs
   };
 
   void           declare_target_settings(dealii::ParameterHandler &prm);

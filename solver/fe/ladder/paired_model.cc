@@ -3,13 +3,17 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
+#include "elasticity/material.h"
 #include "input/case_geometry.h"
 #include "input/expression.h"
 #include "input/spec_list.h"
 #include "mesh/mesh_reader.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <set>
+#include <utility>
 #include <sstream>
 #include <stdexcept>
 
@@ -29,6 +33,15 @@ namespace compliant
     double part_volume(const CaseParameters &p, const MeshedGeometry &geometry)
     {
       return geometry.dimension == 3 ? mesh_volume<3>(geometry) : mesh_volume<2>(geometry) * p.thickness;
+    }
+
+    // The distinct materials of a case (E, nu), in its unit system.
+    std::set<std::pair<double, double>> distinct_materials(const CaseParameters &p, const MeshedGeometry &geometry)
+    {
+      std::set<std::pair<double, double>> found;
+      for (const auto &[id, m] : assign_materials(p.materials, geometry.material_ids, p.unit_system))
+        found.insert({m.youngs_modulus, m.poissons_ratio});
+      return found;
     }
 
     std::string trimmed(std::string s)
@@ -51,15 +64,20 @@ namespace compliant
     const std::string case_dir  = slash == std::string::npos ? "." : primary.case_file.substr(0, slash);
     const std::string path      = file[0] == '/' || std::ifstream(case_dir + "/" + file).fail() ? file :
                                                                                                   case_dir + "/" + file;
-    if (std::ifstream(path).fail())
-      throw InputError(where + ": cannot read '" + file + "' (looked next to the case and in the working "
-                       "directory)");
+    if (std::ifstream(path).fail() || std::filesystem::is_directory(path))
+      throw InputError(where + ": cannot read the case file '" + file + "' (looked next to the case and "
+                       "in the working directory)");
 
-    // Same-named geometry parameters follow the primary; then the spec's own entries.
+    // Same-named geometry parameters follow the primary, and so do its --set materials and unit
+    // system; then the spec's own entries.
     std::map<std::string, double> variables = primary.geometry_parameters;
-    variables["thickness"]                  = primary.dimension == 2 ? primary.thickness : 1.0;
+    if (primary.dimension == 2)
+      variables["thickness"] = primary.thickness;
     CommandLine command_line;
     command_line.case_file = path;
+    for (const auto &o : primary.overrides)
+      if (o.rfind("Material/Materials=", 0) == 0 || o.rfind("Material/Unit system=", 0) == 0)
+        command_line.overrides.push_back(o);
     try
       {
         dealii::ParameterHandler first;
@@ -122,8 +140,20 @@ namespace compliant
     q.write_fields     = primary.write_fields;
     paired.geometry    = mesh_case_geometry(q, communicator);
 
-    // The two models must describe one part: the same volume, up to the chords of coarse curved
-    // boundaries.
+    // The two models must describe one part: the same materials, and the same volume up to the
+    // chords of coarse curved boundaries. (Loads and supports cannot be compared in general: the
+    // case files must give the same ones.)
+    try
+      {
+        if (distinct_materials(primary, primary_geometry) != distinct_materials(q, paired.geometry))
+          throw InputError(where + ": '" + path + "' does not describe the same part: its materials "
+                           "(Material/Materials, Material/Unit system) differ from the case's; expected "
+                           "the same E and nu");
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError(where + " '" + spec + "': " + e.what());
+      }
     const double v_primary = part_volume(primary, primary_geometry), v_paired = part_volume(q, paired.geometry);
     if (!(std::abs(v_primary - v_paired) <= 0.02 * std::max(v_primary, v_paired)))
       {
@@ -132,7 +162,7 @@ namespace compliant
           << " (" << (q.dimension == 2 ? "area times Material/Thickness" : "3D mesh") << ") against "
           << v_primary << " of the case (" << (primary.dimension == 2 ? "area times Material/Thickness" : "3D mesh")
           << "); expected equal within 2 % (set the paired entries in the spec, e.g. "
-          << "'case.prm: Material/Thickness=W')";
+          << (q.dimension == 2 ? "'section.prm: Material/Thickness=W')" : "'part.prm: Geometry/Parameters/W=thickness')");
         throw InputError(s.str());
       }
     return paired;

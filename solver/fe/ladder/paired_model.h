@@ -24,11 +24,13 @@ namespace compliant
     MeshedGeometry                            geometry;
   };
 
-  // spec: 'file[: Section/Entry=expression, ...]', the file next to the primary case (or as
-  // given), the expressions over the primary's geometry parameters and `thickness`. The paired
-  // model writes to the primary's output directory. Throws InputError naming the case file,
-  // Target/Paired model and what was expected: a linear static case of the other dimension (its
-  // 2D side plane stress), whose part has the same volume (within 2 %, on the unrefined meshes).
+  // spec: 'file[: Section/Entry=expression, ...]', the file next to the primary case (else as
+  // given, from the working directory), the expressions over the primary's geometry parameters
+  // (and `thickness` when the primary is 2D). The primary's --set Material/Materials and
+  // Material/Unit system carry over. The paired model writes to the primary's output directory.
+  // Throws InputError naming the case file, Target/Paired model and what was expected: a linear
+  // static case of the other dimension (its 2D side plane stress), with the same materials (E, nu)
+  // and the same volume (within 2 %, on the unrefined meshes). Loads and supports are not compared.
   PairedModel read_paired_model(const CaseParameters &primary, const MeshedGeometry &primary_geometry,
                                 const std::string &spec, MPI_Comm communicator);
 } // namespace compliant

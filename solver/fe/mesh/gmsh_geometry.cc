@@ -22,6 +22,9 @@ namespace compliant
       GmshSession()
       {
         gmsh::initialize();
+        // The ONELAB parameters outlive finalize(): without this, a second geometry read in the
+        // same process (a paired model) would seem to declare the first one's parameters.
+        gmsh::onelab::clear();
         gmsh::option::setNumber("General.Terminal", 0);
         gmsh::option::setNumber("General.Verbosity", 1);
         // gmsh's API throws at the first error, inside its OpenMP meshing region, where an

@@ -1,5 +1,6 @@
 #include "output/summary.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -91,8 +92,11 @@ namespace compliant
   {
     std::ostringstream out;
     out << "Quantities of interest\n";
+    std::size_t width = 44; // one column for the values, however long a name
+    for (const auto &q : s.quantities)
+      width = std::max(width, q.first.size() + 2);
     for (const auto &[k, v] : s.quantities)
-      out << "  " << std::left << std::setw(44) << k << std::setprecision(8) << v << "\n";
+      out << "  " << std::left << std::setw(width) << k << std::setprecision(8) << v << "\n";
     if (!s.comparisons.empty())
       {
         out << "\nComparison with closed forms\n  " << std::left << std::setw(34) << "quantity"
