@@ -107,13 +107,9 @@ namespace compliant
     t.refined_fraction    = prm.get_double("Refined cell fraction");
     t.closed_forms        = prm.get_bool("Closed forms");
     t.paired_model        = prm.get("Paired model");
-    for (auto name : split(prm.get("Quantities"), ','))
-      {
-        name.erase(0, name.find_first_not_of(" \t"));
-        name.erase(name.find_last_not_of(" \t") + 1);
-        if (!name.empty())
-          t.quantities.push_back(name);
-      }
+    for (const auto &item : split(prm.get("Quantities"), ','))
+      if (const auto name = trim(item); !name.empty())
+        t.quantities.push_back(name);
     prm.leave_subsection();
     return t;
   }

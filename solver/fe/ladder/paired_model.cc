@@ -43,13 +43,6 @@ namespace compliant
         found.insert({m.youngs_modulus, m.poissons_ratio});
       return found;
     }
-
-    std::string trimmed(std::string s)
-    {
-      s.erase(0, s.find_first_not_of(" \t"));
-      s.erase(s.find_last_not_of(" \t") + 1);
-      return s;
-    }
   } // namespace
 
   PairedModel read_paired_model(const CaseParameters &primary, const MeshedGeometry &primary_geometry,
@@ -57,7 +50,7 @@ namespace compliant
   {
     const std::string where = "case file '" + primary.case_file + "', Target/Paired model";
     const auto        colon = spec.find(':');
-    const std::string file  = trimmed(spec.substr(0, colon));
+    const std::string file  = trim(spec.substr(0, colon));
     if (file.empty())
       throw InputError(where + ": expected 'case.prm[: Section/Entry=expression, ...]', got '" + spec + "'");
     const auto        slash     = primary.case_file.rfind('/');
@@ -94,11 +87,11 @@ namespace compliant
     if (colon != std::string::npos)
       for (const auto &item : split(spec.substr(colon + 1), ','))
         {
-          const auto entry = trimmed(item);
+          const auto entry = trim(item);
           if (entry.empty())
             continue;
           const auto equals = entry.find('=');
-          if (equals == std::string::npos || trimmed(entry.substr(0, equals)).empty())
+          if (equals == std::string::npos || trim(entry.substr(0, equals)).empty())
             throw InputError(where + ": expected 'Section/Entry=expression', got '" + entry + "'");
           double value;
           try
@@ -109,7 +102,7 @@ namespace compliant
             {
               throw InputError("case file '" + primary.case_file + "': " + e.what());
             }
-          command_line.overrides.push_back(trimmed(entry.substr(0, equals)) + "=" + round_trip_text(value));
+          command_line.overrides.push_back(trim(entry.substr(0, equals)) + "=" + round_trip_text(value));
         }
 
     PairedModel paired;
