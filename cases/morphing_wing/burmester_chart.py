@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Charts of a burmester_synthesis run: the Burmester curves (centre points M, circle points K) with
 the precision positions, the spar at each position, the nearest single pivot and the pivots of the
-first-ranked mechanism; and that mechanism drawn at the four positions.
+first-ranked mechanism; and that mechanism drawn at the four positions, or, when no four-bar is
+defect-free (mechanisms.csv empty), the single pivot carrying the spar.
 Run: /usr/bin/python3 cases/morphing_wing/burmester_chart.py cases/morphing_wing/table3"""
 import cmath
 import csv
@@ -74,6 +75,16 @@ if mechanisms:
     ax2.set_title("ranked #1 (%s, %s; transmission %s-%s deg over the motion)"
                   % (m["grashof"], "defect: " + m["defect"], m["mu_min_motion_deg"], m["mu_max_motion_deg"]),
                   fontsize=9)
+else:
+    # No defect-free four-bar: the answer is the single revolute joint at the pole.
+    for j, (r, a) in enumerate(zip(R, angle)):
+        rot = cmath.exp(1j * (a - angle[0]))
+        rigid = c + rot * (R[0] - c)
+        ax2.plot([c.real, rigid.real], [c.imag, rigid.imag], "r-", alpha=0.35 + 0.2 * j, lw=1.5)
+        ax2.plot(rigid.real, rigid.imag, "rx", ms=6)
+    ax2.plot(c.real, c.imag, "r*", ms=14)
+    ax2.set_title("no defect-free four-bar within the link bounds: the single pivot (arm to the spar,\n"
+                  "x where the rigid arm puts the spar point)", fontsize=9)
 fig.tight_layout()
 out = os.path.join(folder, "..", "burmester.png")
 fig.savefig(out, dpi=110)

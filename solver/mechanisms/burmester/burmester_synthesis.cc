@@ -111,21 +111,21 @@ namespace
 
   std::string row(const CandidateMechanism &m)
   {
+    // Lengths and angles to 6 significant digits (mechanisms of 1e-3 chord and margins of 1e-3 degree
+    // show), the pivots to full precision so that any check can rebuild the mechanism exactly.
     std::ostringstream s;
-    s << std::fixed << std::setprecision(4) << m.lengths.ground << ',' << m.lengths.crank << ','
-      << m.lengths.coupler << ',' << m.lengths.rocker << ',' << m.perimeter << ','
-      << four_bar::to_string(m.grashof.class_) << ',' << std::setprecision(2) << deg(m.mu_min_at_positions) << ','
-      << deg(m.mu_max_at_positions) << ',' << deg(m.mu_min) << ',' << deg(m.mu_max) << ','
-      << deg(m.input_sweep) << ',' << std::scientific << std::setprecision(2) << m.position_error << ','
-      << m.angle_error << ',' << (m.defect.empty() ? "none" : m.defect) << ',' << std::fixed
-      << std::setprecision(6) << m.input.centre_point.real() << ',' << m.input.centre_point.imag() << ','
-      << m.input.circle_point.real() << ',' << m.input.circle_point.imag() << ','
-      << m.output.centre_point.real() << ',' << m.output.centre_point.imag() << ','
-      << m.output.circle_point.real() << ',' << m.output.circle_point.imag();
+    s << std::setprecision(6) << m.lengths.ground << ',' << m.lengths.crank << ',' << m.lengths.coupler << ','
+      << m.lengths.rocker << ',' << m.perimeter << ',' << four_bar::to_string(m.grashof.class_) << ','
+      << deg(m.mu_min_at_positions) << ',' << deg(m.mu_max_at_positions) << ',' << deg(m.mu_min) << ','
+      << deg(m.mu_max) << ',' << deg(m.input_sweep) << ',' << deg(m.toggle_margin_transmission) << ','
+      << deg(m.toggle_margin_input) << ',' << std::setprecision(3) << m.position_error << ',' << m.angle_error
+      << ',' << (m.defect.empty() ? "none" : m.defect) << std::setprecision(17);
+    for (const Complex z : {m.input.centre_point, m.input.circle_point, m.output.centre_point, m.output.circle_point})
+      s << ',' << z.real() << ',' << z.imag();
     return s.str();
   }
   const char *header = "ground,input,coupler,output,perimeter,grashof,mu_min_positions_deg,mu_max_positions_deg,"
-                       "mu_min_motion_deg,mu_max_motion_deg,input_sweep_deg,position_error,angle_error_rad,defect,"
+                       "mu_min_motion_deg,mu_max_motion_deg,input_sweep_deg,toggle_margin_mu_deg,toggle_margin_input_deg,position_error,angle_error_rad,defect,"
                        "Ax,Ay,Bx,By,Dx,Dy,Cx,Cy";
 
   // Writes through a temporary name: a file appears complete or not at all.
@@ -221,28 +221,42 @@ int main(int argc, char **argv)
       if (ranked.empty())
         {
           std::cout << "NO candidate meets every criterion (Grashof, transmission angle over the whole "
-                       "motion, no order/branch/circuit defect).\nBest trade-offs:\n";
+                       "motion, no order/branch/circuit defect).\n";
           // The defect-free mechanisms with the widest transmission band, whatever their class.
           std::vector<const CandidateMechanism *> clean;
+          std::map<std::string, int>              verdicts; // of every candidate within the link bounds
           for (const auto &m : all)
-            if (m.defect_free && m.lengths.longest() <= c.criteria.max_link_length &&
+            if (m.lengths.longest() <= c.criteria.max_link_length &&
                 std::min({m.lengths.ground, m.lengths.crank, m.lengths.coupler, m.lengths.rocker}) >=
                   c.criteria.min_link_length)
-              clean.push_back(&m);
+              {
+                ++verdicts[m.defect.empty() ? "none" : m.defect.substr(0, m.defect.find(':'))];
+                if (m.defect_free)
+                  clean.push_back(&m);
+              }
           std::sort(clean.begin(), clean.end(), [](auto *a, auto *b) {
-            return std::min(a->mu_min, pi - a->mu_max) > std::min(b->mu_min, pi - b->mu_max);
+            return a->toggle_margin_transmission > b->toggle_margin_transmission;
           });
           clean.resize(std::min<std::size_t>(clean.size(), 10));
           ranked = clean;
+          std::cout << "Defect verdicts of the candidates with links within the bounds, whatever their class:";
+          for (const auto &[name, count] : verdicts)
+            std::cout << " " << name << " " << count << ";";
+          std::cout << (clean.empty() ? "\nNo defect-free four-bar at all within the link bounds: the single pivot "
+                                        "above is the answer to these positions.\n"
+                                      : "\nBest trade-offs (defect-free, largest distance to a toggle):\n");
         }
-      std::cout << "rank  ground  input  coupler  output  perimeter  class           mu(motion) deg  sweep deg  pos.err   defect\n";
+      if (!ranked.empty())
+        std::cout << "rank  ground  input  coupler  output  perimeter  class           mu(motion) deg  sweep deg  "
+                   "toggle margin: mu, input deg  pos.err   defect\n";
       for (std::size_t k = 0; k < ranked.size() && k < 15; ++k)
         {
           const auto &m = *ranked[k];
-          std::printf("%4zu  %6.4f %6.4f  %6.4f  %6.4f  %9.4f  %-15s %6.1f-%6.1f  %9.1f  %8.1e  %s\n", k + 1,
-                      m.lengths.ground, m.lengths.crank, m.lengths.coupler, m.lengths.rocker, m.perimeter,
+          std::printf("%4zu  %6.4f %6.4f  %6.4f  %6.4f  %9.4f  %-15s %6.1f-%6.1f  %9.1f  %13.2f %13.2f  %8.1e  %s\n",
+                      k + 1, m.lengths.ground, m.lengths.crank, m.lengths.coupler, m.lengths.rocker, m.perimeter,
                       four_bar::to_string(m.grashof.class_).c_str(), deg(m.mu_min), deg(m.mu_max),
-                      deg(m.input_sweep), m.position_error, m.defect.empty() ? "none" : m.defect.c_str());
+                      deg(m.input_sweep), deg(m.toggle_margin_transmission), deg(m.toggle_margin_input),
+                      m.position_error, m.defect.empty() ? "none" : m.defect.c_str());
         }
       for (std::size_t k = 0; k < ranked.size(); ++k)
         table << k + 1 << ',' << row(*ranked[k]) << "\n";
@@ -273,7 +287,7 @@ int main(int argc, char **argv)
       for (const auto &m : all)
         all_csv << meets_paper_criteria(m, c.criteria) << ',' << meets_all_criteria(m, c.criteria) << ',' << row(m) << "\n";
       std::ostringstream positions_csv;
-      positions_csv << "x,y,angle_deg\n" << std::setprecision(10);
+      positions_csv << "x,y,angle_deg\n" << std::setprecision(17);
       for (const auto &p : c.positions)
         positions_csv << p.x << ',' << p.y << ',' << deg(p.angle) << "\n";
       // The single revolute joint at the pole (the practical answer when the curves collapse): per

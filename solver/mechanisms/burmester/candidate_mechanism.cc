@@ -1,6 +1,5 @@
 #include <mechanisms/burmester/candidate_mechanism.h>
-#include <mechanisms/four_bar/branch_tracker.h>
-#include <mechanisms/four_bar/position_analysis.h>
+#include <mechanisms/four_bar/toggle_analysis.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,12 +13,13 @@ namespace compliant
     {
       constexpr double pi = 3.14159265358979323846;
 
-      struct GlobalPose
+      std::array<double, 2> point(const Complex z) { return {z.real(), z.imag()}; }
+      Complex               complex(const std::array<double, 2> &p) { return {p[0], p[1]}; }
+
+      std::string between(unsigned int j) // positions j and j + 1, counted from 1
       {
-        Complex b, c, coupler_point;
-        double  coupler_orientation;
-        double  transmission; // 0..pi
-      };
+        return "between positions " + std::to_string(j) + " and " + std::to_string(j + 1);
+      }
     } // namespace
 
     CandidateMechanism analyse_candidate(const std::vector<PrecisionPosition> &positions,
@@ -40,105 +40,83 @@ namespace compliant
           return m;
         }
       m.grashof = four_bar::classify_grashof(m.lengths);
-      const double gamma = std::arg(D - A);             // ground line direction
-      const double phi1  = std::arg(C1 - B1);           // coupler line at position 1
+      const Complex frame = std::polar(1.0, -std::arg(D - A)); // global -> library frame (A origin, D on x)
+      const double  phi1  = std::arg(C1 - B1);
       const Complex r_local = (R1 - B1) * std::polar(1.0, -phi1);
 
-      auto to_global = [&](const four_bar::Pose &pose) {
-        const auto    joints = four_bar::joint_positions(m.lengths, pose);
-        const Complex e      = std::polar(1.0, gamma);
-        GlobalPose    g;
-        g.b = A + e * Complex(joints.b[0], joints.b[1]);
-        g.c = A + e * Complex(joints.c[0], joints.c[1]);
-        const double coupler_dir = std::arg(g.c - g.b);
-        g.coupler_point          = g.b + r_local * std::polar(1.0, coupler_dir);
-        g.coupler_orientation    = positions[0].angle + (coupler_dir - phi1);
-        g.transmission           = std::abs(four_bar::wrap_angle(pose.rocker_angle - pose.coupler_angle));
-        return g;
-      };
-
-      // Input angle (library frame) at each position, and the branch that assembles position 1.
+      // The coupler carries B and C rigidly from position 1: the input angle, the assembly and the
+      // transmission angle at each position follow without any motion.
       std::array<double, 4> theta2;
+      m.mu_min_at_positions = pi;
+      m.mu_max_at_positions = 0;
       for (unsigned int j = 0; j < 4; ++j)
-        theta2[j] = std::arg(input.W) + input.beta[j] - gamma;
-      four_bar::AssemblyBranch branch = four_bar::AssemblyBranch::plus;
-      double                   best   = 1e300;
-      for (const auto b : {four_bar::AssemblyBranch::plus, four_bar::AssemblyBranch::minus})
+        {
+          const Complex turn = std::polar(1.0, positions[j].angle - positions[0].angle);
+          const Complex Rj(positions[j].x, positions[j].y);
+          const Complex Bj = Rj + (B1 - R1) * turn, Cj = Rj + (C1 - R1) * turn;
+          theta2[j]        = std::arg((Bj - A) * frame);
+          m.assembly[j]    = four_bar::assembly_sign(point(Bj), point(Cj), point(D));
+          const double mu  = four_bar::transmission_angle_for_diagonal(m.lengths, std::abs(Bj - D));
+          m.mu_min_at_positions = std::min(m.mu_min_at_positions, mu);
+          m.mu_max_at_positions = std::max(m.mu_max_at_positions, mu);
+        }
+
+      // Direction: the one (if any) in which the input meets the positions in order, the long way
+      // round included; without one, the shorter way from position 1 to 2 (an order defect).
+      std::array<double, 4> travel{0, 0, 0, 0};
+      auto travels = [&](double sense) {
+        std::array<double, 4> t{0, 0, 0, 0};
+        for (unsigned int j = 1; j < 4; ++j)
+          {
+            const double a = sense * (theta2[j] - theta2[0]);
+            t[j]           = a - 2 * pi * std::floor(a / (2 * pi));
+          }
+        return t;
+      };
+      auto in_order = [](const std::array<double, 4> &t) { return t[1] < t[2] && t[2] < t[3]; };
+      double sense = std::remainder(theta2[1] - theta2[0], 2 * pi) >= 0 ? 1 : -1;
+      if (!in_order(travels(sense)) && in_order(travels(-sense)))
+        sense = -sense;
+      travel        = travels(sense);
+      m.input_sweep = sense * travel[3];
+
+      const auto sweep = four_bar::analyse_crank_sweep(m.lengths, theta2[0], m.input_sweep);
+      m.mu_min                     = sweep.mu_min;
+      m.mu_max                     = sweep.mu_max;
+      m.toggle_margin_transmission = sweep.transmission_margin;
+      m.toggle_margin_input        = sweep.crank_margin;
+
+      // Forward kinematics on position 1's assembly: where the coupler point lands at each position.
+      for (unsigned int j = 0; j < 4 && m.assembly[0] != 0; ++j)
         try
           {
-            const double d = std::abs(to_global(four_bar::solve_pose(m.lengths, theta2[0], b)).c - C1);
-            if (d < best)
-              best = d, branch = b;
+            const auto    joints = four_bar::assemble(m.lengths, theta2[j], m.assembly[0]);
+            const Complex b = A + complex(joints.b) / frame, c = A + complex(joints.c) / frame;
+            const double  coupler_dir = std::arg(c - b);
+            const Complex r           = b + r_local * std::polar(1.0, coupler_dir);
+            m.position_error = std::max(m.position_error, std::abs(r - Complex(positions[j].x, positions[j].y)));
+            m.angle_error    = std::max(m.angle_error, std::abs(std::remainder(positions[0].angle + coupler_dir - phi1 -
+                                                                                positions[j].angle, 2 * pi)));
           }
         catch (const std::domain_error &)
           {}
-      if (best > 1e-6 * scale)
-        {
-          m.defect = "position 1 does not assemble";
-          return m;
-        }
 
-      // Direction: the way the input turns from position 1 to 2; the positions must follow in order.
-      std::array<double, 4> travel{0, 0, 0, 0};
-      const double          sense = std::remainder(theta2[1] - theta2[0], 2 * pi) >= 0 ? 1 : -1;
-      for (unsigned int j = 1; j < 4; ++j)
-        {
-          double t = sense * (theta2[j] - theta2[0]);
-          t        = t - 2 * pi * std::floor(t / (2 * pi));
-          travel[j] = t;
-        }
-      m.input_sweep = sense * travel[3];
-      if (!(travel[1] < travel[2] && travel[2] < travel[3]))
+      if (!in_order(travel))
         m.defect = "order defect: the input passes the positions out of order";
-
-      // Track the motion in steps of at most 0.5 degrees, through every position.
-      four_bar::BranchTracker tracker(m.lengths, theta2[0], branch);
-      m.mu_min = m.mu_min_at_positions = pi;
-      m.mu_max = m.mu_max_at_positions = 0;
-      auto record = [&](const GlobalPose &g) {
-        m.mu_min = std::min(m.mu_min, g.transmission);
-        m.mu_max = std::max(m.mu_max, g.transmission);
-      };
-      auto check_position = [&](const GlobalPose &g, unsigned int j) {
-        m.position_error = std::max(m.position_error,
-                                    std::abs(g.coupler_point - Complex(positions[j].x, positions[j].y)));
-        m.angle_error    = std::max(m.angle_error,
-                                    std::abs(std::remainder(g.coupler_orientation - positions[j].angle, 2 * pi)));
-        m.mu_min_at_positions = std::min(m.mu_min_at_positions, g.transmission);
-        m.mu_max_at_positions = std::max(m.mu_max_at_positions, g.transmission);
-      };
-      const GlobalPose first = to_global(tracker.pose());
-      record(first);
-      check_position(first, 0);
-      const double step_max = 0.5 * pi / 180;
-      double       done     = 0;
-      for (unsigned int j = 1; j < 4 && m.defect.empty(); ++j)
+      else if (sweep.toggle_inside || !sweep.closes_everywhere)
         {
-          const unsigned int steps = std::max(1u, static_cast<unsigned int>(std::ceil((travel[j] - done) / step_max)));
-          const double       start = done;
-          for (unsigned int s = 1; s <= steps; ++s)
-            {
-              const double angle = theta2[0] + sense * (start + (travel[j] - start) * s / steps);
-              try
-                {
-                  record(to_global(tracker.advance(angle)));
-                }
-              catch (const std::domain_error &)
-                {
-                  m.defect = "circuit defect: a dead point between positions " + std::to_string(j) +
-                             " and " + std::to_string(j + 1) + " (the input cannot drive through)";
-                  break;
-                }
-            }
-          if (!m.defect.empty())
-            break;
-          done = travel[j];
-          const GlobalPose g = to_global(tracker.pose());
-          check_position(g, j);
-          if (std::abs(g.coupler_point - Complex(positions[j].x, positions[j].y)) > 1e-6 * scale)
-            m.defect = "branch defect: position " + std::to_string(j + 1) +
-                       " lies on the other assembly branch";
+          unsigned int j = 1;
+          while (j < 3 && sweep.toggle_travel > travel[j])
+            ++j;
+          m.defect = "circuit defect: a dead point " + between(j) + " (the input cannot drive through)";
         }
+      else
+        for (unsigned int j = 0; j < 4 && m.defect.empty(); ++j)
+          if (m.assembly[j] == 0)
+            m.defect = "circuit defect: position " + std::to_string(j + 1) + " is a toggle";
+          else if (m.assembly[j] != m.assembly[0])
+            m.defect = "branch defect: position " + std::to_string(j + 1) +
+                       " lies on the other assembly branch (no toggle between: the input cannot reach it)";
       m.defect_free = m.defect.empty();
       return m;
     }

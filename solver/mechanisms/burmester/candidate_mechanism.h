@@ -1,14 +1,18 @@
-// A four-bar built from two Burmester dyads, checked by forward kinematics with the four-bar library:
-// does the input link, turning one way, carry the coupler through the four precision positions in
-// order, on one assembly branch, without a dead point (order, branch and circuit defects, the
-// known failings of Burmester synthesis; Chase & Mirth 1993; Balli & Chand 2002), and what
-// transmission angle does it have over that whole motion?
+// A four-bar built from two Burmester dyads, checked with the four-bar library: does the input link,
+// turning one way, carry the coupler through the four precision positions in order, on one assembly
+// branch, without a dead point (order, branch and circuit defects, the known failings of Burmester
+// synthesis; Chase & Mirth 1993; Balli & Chand 2002), and what transmission angle does it have over
+// that whole motion? Decided exactly, not by a stepped motion: the assembly at each position is the
+// side of the diagonal B -> D on which C lies (the coupler carries B and C there), and the absence
+// of a toggle between the positions follows from the diagonal's extremes over the input's sweep
+// (four_bar/toggle_analysis.h). A stepped tracker hops between assemblies near a toggle.
 #pragma once
 
 #include <mechanisms/burmester/dyad_synthesis.h>
 #include <mechanisms/four_bar/grashof.h>
 #include <mechanisms/four_bar/link_lengths.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -27,6 +31,11 @@ namespace compliant
       double mu_min_at_positions = 0, mu_max_at_positions = 0;
       double mu_min = 0, mu_max = 0;
       double input_sweep = 0; // radians turned by the input from position 1 to 4 (signed)
+      // Distance to the nearest toggle over the motion: in transmission angle, min(mu_min, pi - mu_max),
+      // and in input rotation beyond the motion's ends (infinite if the input turns fully without one).
+      double toggle_margin_transmission = 0, toggle_margin_input = 0;
+      // Assembly (side of B -> D on which C lies, +1 or -1) at each position, as the coupler places B and C.
+      std::array<int, 4> assembly{0, 0, 0, 0};
       // Forward kinematics at the four positions: largest coupler point and orientation errors.
       double position_error = 0, angle_error = 0;
       bool        defect_free = false;
@@ -41,7 +50,7 @@ namespace compliant
       double min_link_length = 0.02; // chords; shorter links are points, not parts to build
     };
 
-    // Forward kinematics of the pair (crank = input dyad) through the motion, in small input steps.
+    // The pair as a four-bar driven by the input dyad's link, through the motion from position 1 to 4.
     CandidateMechanism analyse_candidate(const std::vector<PrecisionPosition> &positions,
                                          const Dyad &input, const Dyad &output);
 
