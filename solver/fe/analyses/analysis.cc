@@ -3,10 +3,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include "analyses/linear_static.h"
-#include "analyses/nonlinear_static.h"
-#include "analyses/linkage.h"
-#include "analyses/modal.h"
 
 #include <unistd.h>
 
@@ -51,22 +47,6 @@ namespace compliant
     if (!error.empty())
       throw InputError("case file '" + p.case_file + "', Output/Directory: " + error +
                        "; give a directory you can write");
-  }
-
-  const std::vector<Analysis> &analyses()
-  {
-    static const std::vector<Analysis> list = {linear_static_analysis(),
-                                               nonlinear_static_analysis(), modal_analysis(),
-                                               linkage_analysis()};
-    return list;
-  }
-
-  const Analysis &find_analysis(const std::string &name)
-  {
-    for (const auto &a : analyses())
-      if (a.name == name)
-        return a;
-    throw InputError("unknown analysis '" + name + "'");
   }
 
   MeshPartitionChoice choose_mesh_partition(const RunContext &context, const CaseParameters &p,

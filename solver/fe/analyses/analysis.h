@@ -1,10 +1,12 @@
 // The kinds of analysis a case can ask for (Analysis = ...). Each one declares its own case-file
-// subsection and runs from the common inputs; new analyses are added to the list in analysis.cc.
+// subsection and runs from the common inputs; new analyses are added to the list in
+// app/analysis_list.cc.
 #pragma once
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include "input/analysis_declarations.h"
 #include "input/case_file.h"
 #include "mesh/gmsh_geometry.h"
 #include "mesh/mesh_partition.h"
@@ -26,18 +28,12 @@ namespace compliant
     MPI_Comm                        communicator;
   };
 
-  struct Analysis
+  // An analysis kind: what a case file may name (input/analysis_declarations.h) and how it runs.
+  struct Analysis : AnalysisDeclaration
   {
-    std::string name;
-    std::string documentation;
-    // Declares the analysis' own entries (in its own subsection); may do nothing.
-    std::function<void(dealii::ParameterHandler &)> declare_parameters;
     // Runs the case; returns the exit code. Throws InputError for case-file mistakes.
     std::function<int(const RunContext &)> run;
   };
-
-  const std::vector<Analysis> &analyses();
-  const Analysis              &find_analysis(const std::string &name);
 
   // Prints the mesh line ("Mesh: N cells, M DoFs (<description>) on R ranks"); with --check also
   // that the case is valid, and returns true: the caller stops there.

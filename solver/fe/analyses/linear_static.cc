@@ -1,8 +1,6 @@
 #include "analyses/linear_static.h"
 
 #include "analyses/linear_static_model.h"
-#include "ladder/model_ladder.h"
-#include "ladder/paired_model.h"
 #include "output/field_output.h"
 
 namespace compliant
@@ -12,21 +10,7 @@ namespace compliant
     template <int dim>
     int run(const RunContext &context)
     {
-      const TargetSettings target =
-        read_target_settings(const_cast<dealii::ParameterHandler &>(context.prm));
-      if (target.relative_error > 0)
-        return run_model_ladder<dim>(context, target);
-
       const auto &p     = context.parameters;
-      if (!target.paired_model.empty())
-        {
-          // Only the ladder reads the pair; --check still validates it.
-          if (context.check_only)
-            read_paired_model(p, context.geometry, target.paired_model, context.communicator);
-          if (dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0)
-            std::cout << "Target/Paired model is read by the model ladder only (Target/Relative error "
-                         "= 0 here): this run solves " << p.case_file << " as set\n";
-        }
       auto        model = solve_linear_static_model<dim>(context, p);
       if (model.stopped_for_check)
         return 0;
@@ -47,14 +31,8 @@ namespace compliant
     }
   } // namespace
 
-  Analysis linear_static_analysis()
+  int run_linear_static(const RunContext &context)
   {
-    return {"linear static",
-            "small-strain linear elasticity, one solve; with Target/Relative error > 0 the model "
-            "ladder chooses the discretization and, if needed, finite strain",
-            [](dealii::ParameterHandler &prm) { declare_target_settings(prm); },
-            [](const RunContext &context) {
-              return context.parameters.dimension == 2 ? run<2>(context) : run<3>(context);
-            }};
+    return context.parameters.dimension == 2 ? run<2>(context) : run<3>(context);
   }
 } // namespace compliant

@@ -1,9 +1,11 @@
-// Linear static analysis: one solve of the linear elastic problem, its quantities and fields.
+// Linear static analysis: one solve of the linear elastic problem, its quantities and fields, on
+// the discretization the case sets (the model ladder, ladder/linear_static_analysis.h, decides
+// when a target error is asked for).
 #pragma once
 
 #include "analyses/analysis.h"
 
 namespace compliant
 {
-  Analysis linear_static_analysis();
+  int run_linear_static(const RunContext &context);
 } // namespace compliant

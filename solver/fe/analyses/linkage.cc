@@ -3,7 +3,7 @@
 #include <deal.II/base/timer.h>
 
 #include "constraints/extra_constraints.h"
-#include "constraints/global_constraints.h"
+#include "elasticity/global_constraints.h"
 #include "elasticity/linear_elastic_problem.h"
 #include "output/field_output.h"
 #include "quantities/quantities.h"

@@ -3,7 +3,7 @@
 #include <deal.II/base/timer.h>
 
 #include "constraints/extra_constraints.h"
-#include "constraints/global_constraints.h"
+#include "elasticity/global_constraints.h"
 #include "analyses/modal_eigensolver.h"
 #include "analyses/modal_fields.h"
 #include "analyses/modal_mass_matrix.h"

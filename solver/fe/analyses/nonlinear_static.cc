@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include "finite_strain/finite_strain_problem.h"
+#include "nonlinear/load_stepping.h"
 #include "output/field_output.h"
 #include "quantities/quantities.h"
 
@@ -19,11 +20,6 @@ namespace compliant
 {
   namespace
   {
-    struct SteppingSettings
-    {
-      double initial_step = 0.1, minimum_step = 1e-4, maximum_step = 0.25;
-    };
-
     void declare(dealii::ParameterHandler &prm)
     {
       using namespace dealii;
@@ -64,6 +60,39 @@ namespace compliant
       prm.leave_subsection();
     }
 
+    // The finite-strain problem as the load path sees it.
+    template <int dim>
+    class FiniteStrainLoadPath : public LoadPathProblem
+    {
+    public:
+      FiniteStrainLoadPath(FiniteStrainProblem<dim> &problem, std::function<bool()> interruption)
+        : problem(problem)
+        , interruption(std::move(interruption))
+      {}
+      double       load_factor() const override { return problem.load_factor; }
+      NewtonReport solve_to(const double target) override { return problem.solve_to(target); }
+      void         save_state() override
+      {
+        saved             = problem.solution;
+        saved_load_factor = problem.load_factor;
+      }
+      void   restore_state() override { problem.restore(saved, saved_load_factor); }
+      double change_from_saved_state() const override
+      {
+        dealii::PETScWrappers::MPI::Vector change(problem.locally_owned_dofs, problem.communicator);
+        change = problem.solution;
+        change.add(-1, saved);
+        return change.l2_norm();
+      }
+      unsigned int unstable_modes() override { return problem.unstable_modes(); }
+      bool         stop_requested() override { return interruption(); }
+
+    private:
+      FiniteStrainProblem<dim>          &problem;
+      std::function<bool()>              interruption;
+      dealii::PETScWrappers::MPI::Vector saved;
+      double                             saved_load_factor = 0;
+    };
   } // namespace
 
   template <int dim>
@@ -75,7 +104,7 @@ namespace compliant
       auto       &prm  = const_cast<dealii::ParameterHandler &>(context.prm);
 
       FiniteStrainSettings settings;
-      SteppingSettings     stepping;
+      LoadSteppingSettings stepping;
       prm.enter_subsection("Finite strain");
       settings.law                   = prm.get("Law");
       settings.mooney_rivlin_ratio   = prm.get_double("Mooney-Rivlin ratio");
@@ -85,7 +114,7 @@ namespace compliant
       settings.residual_tolerance    = prm.get_double("Residual tolerance");
       // A moment on a rigid boundary in 3D makes the tangent unsymmetric too (a space-fixed
       // moment is not conservative under finite rotations).
-      const bool stability_check = prm.get_bool("Stability check") &&
+      stepping.stability_check = prm.get_bool("Stability check") &&
                                    settings.follower_pressure.empty() &&
                                    !(dim == 3 && !dealii::Utilities::trim(p.rigid).empty());
       stepping.initial_step          = prm.get_double("Initial step");
@@ -130,132 +159,63 @@ namespace compliant
       };
       InterruptionGuard interruption;
       problem.stop_requested = [&]() { return interruption.requested(comm); };
-      bool interrupted = false;
 
-      // Maximum step bounds the first step too (a smaller maximum than initial step used to be
-      // ignored until the second step).
-      double       step = std::min(stepping.initial_step, stepping.maximum_step), total_newton = 0;
-      unsigned int n_steps = 0, n_cutbacks = 0;
-      std::string  failure;
-      double       summary_limit_load_factor = -1;
-      double       previous_rate = 0;      // |du| / d(load factor) of the last accepted step
-      const double jump_factor   = 3;
-      Quantities   quantities;
-      while (problem.load_factor < 1 - 1e-12)
+      Quantities quantities;
+      const auto on_step = [&](const AcceptedStep &accepted) {
+        quantities = compute_quantities(problem);
+        // Derived quantities per step too, so curves can hold e.g. a link angle.
+        try
+          {
+            add_derived_quantities(p.derived, quantities, problem.expression_variables());
+          }
+        catch (const std::invalid_argument &e)
+          {
+            throw InputError("case file '" + p.case_file + "': " + e.what());
+          }
+        if (!root)
+          return;
+        const auto &report = accepted.newton;
+        std::cout << "step " << std::setw(3) << accepted.number << "  load factor " << std::setw(10)
+                  << std::setprecision(6) << accepted.load_factor << "  Newton " << std::setw(2)
+                  << report.iterations << "  residual " << std::scientific << std::setprecision(2)
+                  << report.residual << std::defaultfloat;
+        if (report.line_search_cuts)
+          std::cout << "  line search cuts " << report.line_search_cuts;
+        std::cout << std::endl;
+        if (columns.empty())
+          {
+            curve = "step,load_factor,newton_iterations";
+            for (const auto &[k, v] : quantities)
+              if (k.rfind("time_", 0) != 0)
+                {
+                  columns.push_back(k);
+                  curve += "," + k;
+                }
+            curve += "\n";
+          }
+        std::ostringstream line;
+        line << accepted.number << "," << std::setprecision(12) << accepted.load_factor << ","
+             << report.iterations;
+        for (const auto &k : columns)
+          line << "," << quantities[k];
+        curve += line.str() + "\n";
+        write_curve();
+      };
+      const auto on_cutback = [&](const double target, const std::string &why, const double next_step) {
+        if (root)
+          std::cout << "step to load factor " << target << " failed: " << why << "; cutting the step to "
+                    << next_step << std::endl;
+      };
+      FiniteStrainLoadPath<dim> path(problem, [&]() { return interruption.requested(comm); });
+      const LoadPathResult      result      = follow_load_path(path, stepping, on_step, on_cutback);
+      const bool                interrupted = result.interrupted;
+      std::string               failure     = result.failure;
+      if (interrupted)
         {
-          const double target = std::min(1.0, problem.load_factor + step);
-          try
-            {
-              if (interruption.requested(comm))
-                throw RunInterrupted();
-              const double previous = problem.load_factor;
-              const dealii::PETScWrappers::MPI::Vector previous_state = problem.solution;
-              const auto   report   = problem.solve_to(target);
-              // A converged step whose displacement change per load increment is many times
-              // the previous step's has jumped to a distant equilibrium (snap-through past a
-              // limit point): reject it, so that cutting back finds the limit instead.
-              {
-                dealii::PETScWrappers::MPI::Vector change(problem.locally_owned_dofs, comm);
-                change = problem.solution;
-                change.add(-1, previous_state);
-                const double rate = change.l2_norm() / (target - previous);
-                if (previous_rate > 0 && rate > jump_factor * previous_rate)
-                  {
-                    problem.restore(previous_state, previous);
-                    throw StepFailure("the displacement jumped " + std::to_string(rate / previous_rate) +
-                                      " times faster than in the previous step (snap-through "
-                                      "past a limit point?)");
-                  }
-                previous_rate = rate;
-              }
-              ++n_steps;
-              if (stability_check)
-                {
-                  const unsigned int unstable = problem.unstable_modes();
-                  if (unstable > 0)
-                    {
-                      std::ostringstream message;
-                      message << "equilibrium turned unstable between load factors " << previous
-                              << " and " << target << ": the tangent stiffness has " << unstable
-                              << " negative eigenvalue(s) (limit point or bifurcation). Load "
-                              << "control cannot follow it; the last stable load factor is "
-                              << previous << ". Drive the structure by a prescribed "
-                              << "displacement to follow it past the limit point";
-                      failure = message.str();
-                      summary_limit_load_factor = previous;
-                    }
-                }
-              total_newton += report.iterations;
-              quantities = compute_quantities(problem);
-              // Derived quantities per step too, so curves can hold e.g. a link angle.
-              try
-                {
-                  add_derived_quantities(p.derived, quantities, problem.expression_variables());
-                }
-              catch (const std::invalid_argument &e)
-                {
-                  throw InputError("case file '" + p.case_file + "': " + e.what());
-                }
-              if (root)
-                {
-                  std::cout << "step " << std::setw(3) << n_steps << "  load factor "
-                            << std::setw(10) << std::setprecision(6) << target << "  Newton "
-                            << std::setw(2) << report.iterations << "  residual "
-                            << std::scientific << std::setprecision(2) << report.residual
-                            << std::defaultfloat;
-                  if (report.line_search_cuts)
-                    std::cout << "  line search cuts " << report.line_search_cuts;
-                  std::cout << std::endl;
-                  if (columns.empty())
-                    {
-                      curve = "step,load_factor,newton_iterations";
-                      for (const auto &[k, v] : quantities)
-                        if (k.rfind("time_", 0) != 0)
-                          {
-                            columns.push_back(k);
-                            curve += "," + k;
-                          }
-                      curve += "\n";
-                    }
-                  std::ostringstream line;
-                  line << n_steps << "," << std::setprecision(12) << target << "," << report.iterations;
-                  for (const auto &k : columns)
-                    line << "," << quantities[k];
-                  curve += line.str() + "\n";
-                  write_curve();
-                }
-              if (!failure.empty())
-                break;
-              if (report.iterations <= 6)
-                step = std::min(stepping.maximum_step, 1.5 * step);
-            }
-          catch (const RunInterrupted &)
-            {
-              interrupted = true;
-              std::ostringstream message;
-              message << "interrupted by " << interruption.signal_name(comm) << " at load factor "
-                      << problem.load_factor << " (last converged step, " << n_steps << " steps)";
-              failure = message.str();
-              break;
-            }
-          catch (const StepFailure &e)
-            {
-              ++n_cutbacks;
-              if (root)
-                std::cout << "step to load factor " << target << " failed: " << e.what()
-                          << "; cutting the step to " << step / 2 << std::endl;
-              step /= 2;
-              if (step < stepping.minimum_step)
-                {
-                  std::ostringstream message;
-                  message << "stopped at load factor " << problem.load_factor
-                          << " (last converged step): the step to " << target << " failed ("
-                          << e.what() << ") and the increment fell below Finite strain/Minimum "
-                          << "step = " << stepping.minimum_step;
-                  failure = message.str();
-                  break;
-                }
-            }
+          std::ostringstream message;
+          message << "interrupted by " << interruption.signal_name(comm) << " at load factor "
+                  << problem.load_factor << " (last converged step, " << result.steps << " steps)";
+          failure = message.str();
         }
 
       if (root && columns.empty()) // no step converged: the curve still says what it would hold
@@ -275,11 +235,11 @@ namespace compliant
       summary.settings.insert({"curve", curve_file});
       summary.quantities = quantities;
       summary.quantities["load_factor"]       = problem.load_factor;
-      summary.quantities["load_steps"]        = n_steps;
-      summary.quantities["step_cutbacks"]     = n_cutbacks;
-      summary.quantities["newton_iterations"] = total_newton;
-      if (summary_limit_load_factor >= 0)
-        summary.quantities["last_stable_load_factor"] = summary_limit_load_factor;
+      summary.quantities["load_steps"]        = result.steps;
+      summary.quantities["step_cutbacks"]     = result.cutbacks;
+      summary.quantities["newton_iterations"] = result.newton_iterations;
+      if (result.last_stable_load_factor >= 0)
+        summary.quantities["last_stable_load_factor"] = result.last_stable_load_factor;
       summary.quantities["time_tangent_assembly"] = problem.tangent_assembly_seconds;
       summary.quantities["time_linear_solves"]    = problem.linear_solve_seconds;
       summary.quantities["linear_solves"]         = problem.total_linear_solves;

@@ -7,7 +7,8 @@
 #include <closed_forms/registry.h>
 
 #include "analyses/analysis.h"
-#include "elasticity/material.h"
+#include "app/analysis_list.h"
+#include "materials/material.h"
 #include "input/case_file.h"
 #include "input/case_geometry.h"
 
@@ -74,6 +75,7 @@ int main(int argc, char **argv)
   MPI_Comm_dup(comm, &error_communicator);
   try
     {
+      register_analyses();
       const CommandLine        command_line = parse_command_line(argc, argv);
       dealii::ParameterHandler prm;
       const CaseParameters     p = read_case(command_line, prm);

@@ -11,7 +11,7 @@ namespace compliant
 
   template <int dim>
   std::map<types::global_dof_index, DofPoint<dim>>
-  boundary_dof_points(const LinearElasticProblem<dim> &problem, const int boundary_id)
+  boundary_dof_points(const Discretization<dim> &problem, const int boundary_id)
   {
     std::map<types::global_dof_index, DofPoint<dim>> result;
     const Quadrature<dim> support(problem.fe->get_unit_support_points());
@@ -36,7 +36,7 @@ namespace compliant
   }
 
   template std::map<types::global_dof_index, DofPoint<2>>
-  boundary_dof_points<2>(const LinearElasticProblem<2> &, int);
+  boundary_dof_points<2>(const Discretization<2> &, int);
   template std::map<types::global_dof_index, DofPoint<3>>
-  boundary_dof_points<3>(const LinearElasticProblem<3> &, int);
+  boundary_dof_points<3>(const Discretization<3> &, int);
 } // namespace compliant

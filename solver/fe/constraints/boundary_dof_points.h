@@ -4,7 +4,7 @@
 
 #include <deal.II/base/point.h>
 
-#include "elasticity/linear_elastic_problem.h"
+#include "discretization/discretization.h"
 
 #include <map>
 
@@ -20,5 +20,5 @@ namespace compliant
   // Keyed by global DoF index.
   template <int dim>
   std::map<dealii::types::global_dof_index, DofPoint<dim>>
-  boundary_dof_points(const LinearElasticProblem<dim> &problem, int boundary_id);
+  boundary_dof_points(const Discretization<dim> &problem, int boundary_id);
 } // namespace compliant

@@ -6,7 +6,7 @@
 namespace compliant
 {
   template <int dim>
-  void add_edge_supports(const LinearElasticProblem<dim> &problem, const std::string &spec,
+  void add_edge_supports(const Discretization<dim> &problem, const std::string &spec,
                          const std::string &where, dealii::AffineConstraints<double> &constraints)
   {
     for (const auto &item : parse_spec_list(spec, where))
@@ -47,8 +47,8 @@ namespace compliant
       }
   }
 
-  template void add_edge_supports<2>(const LinearElasticProblem<2> &, const std::string &,
+  template void add_edge_supports<2>(const Discretization<2> &, const std::string &,
                                      const std::string &, dealii::AffineConstraints<double> &);
-  template void add_edge_supports<3>(const LinearElasticProblem<3> &, const std::string &,
+  template void add_edge_supports<3>(const Discretization<3> &, const std::string &,
                                      const std::string &, dealii::AffineConstraints<double> &);
 } // namespace compliant

@@ -5,7 +5,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
-#include "elasticity/linear_elastic_problem.h"
+#include "discretization/discretization.h"
 
 #include <string>
 
@@ -14,6 +14,6 @@ namespace compliant
   // spec: 'bottom & sides: z; a & b: x, y'. Holds the named components at zero. DoFs that are
   // constrained already keep their constraint. Throws std::invalid_argument naming `where`.
   template <int dim>
-  void add_edge_supports(const LinearElasticProblem<dim> &problem, const std::string &spec,
+  void add_edge_supports(const Discretization<dim> &problem, const std::string &spec,
                          const std::string &where, dealii::AffineConstraints<double> &constraints);
 } // namespace compliant

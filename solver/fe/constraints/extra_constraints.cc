@@ -44,7 +44,7 @@ namespace compliant
   }
 
   template <int dim>
-  void add_extra_constraints(const LinearElasticProblem<dim> &problem,
+  void add_extra_constraints(const Discretization<dim> &problem,
                              const ExtraConstraints          &extra,
                              dealii::AffineConstraints<double> &constraints)
   {
@@ -53,8 +53,8 @@ namespace compliant
     add_pin_joints(problem, extra.pins, "Extra constraints/Pins", constraints);
   }
 
-  template void add_extra_constraints<2>(const LinearElasticProblem<2> &, const ExtraConstraints &,
+  template void add_extra_constraints<2>(const Discretization<2> &, const ExtraConstraints &,
                                          dealii::AffineConstraints<double> &);
-  template void add_extra_constraints<3>(const LinearElasticProblem<3> &, const ExtraConstraints &,
+  template void add_extra_constraints<3>(const Discretization<3> &, const ExtraConstraints &,
                                          dealii::AffineConstraints<double> &);
 } // namespace compliant

@@ -6,7 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 
-#include "elasticity/linear_elastic_problem.h"
+#include "discretization/discretization.h"
 
 #include <string>
 
@@ -27,7 +27,7 @@ namespace compliant
   // Adds edge supports, then mirror ties, then pins, to constraints gathered from every rank (not closed).
   // Throws std::invalid_argument naming the entry.
   template <int dim>
-  void add_extra_constraints(const LinearElasticProblem<dim> &problem,
+  void add_extra_constraints(const Discretization<dim> &problem,
                              const ExtraConstraints          &extra,
                              dealii::AffineConstraints<double> &constraints);
 } // namespace compliant

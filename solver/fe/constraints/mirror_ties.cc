@@ -76,7 +76,7 @@ namespace compliant
   } // namespace
 
   template <int dim>
-  void add_mirror_ties(const LinearElasticProblem<dim> &problem, const std::string &spec,
+  void add_mirror_ties(const Discretization<dim> &problem, const std::string &spec,
                        const std::string &where, AffineConstraints<double> &constraints)
   {
     for (const auto &item : parse_spec_list(spec, where))
@@ -204,8 +204,8 @@ namespace compliant
       }
   }
 
-  template void add_mirror_ties<2>(const LinearElasticProblem<2> &, const std::string &,
+  template void add_mirror_ties<2>(const Discretization<2> &, const std::string &,
                                    const std::string &, AffineConstraints<double> &);
-  template void add_mirror_ties<3>(const LinearElasticProblem<3> &, const std::string &,
+  template void add_mirror_ties<3>(const Discretization<3> &, const std::string &,
                                    const std::string &, AffineConstraints<double> &);
 } // namespace compliant

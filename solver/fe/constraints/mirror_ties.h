@@ -9,7 +9,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
-#include "elasticity/linear_elastic_problem.h"
+#include "discretization/discretization.h"
 
 #include <string>
 
@@ -24,6 +24,6 @@ namespace compliant
   // component, a node without a mirror node on the same boundary, or a tie that contradicts a
   // constraint already there.
   template <int dim>
-  void add_mirror_ties(const LinearElasticProblem<dim> &problem, const std::string &spec,
+  void add_mirror_ties(const Discretization<dim> &problem, const std::string &spec,
                        const std::string &where, dealii::AffineConstraints<double> &constraints);
 } // namespace compliant

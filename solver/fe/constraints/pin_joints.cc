@@ -23,7 +23,7 @@ namespace compliant
     };
 
     template <int dim>
-    std::vector<RingNode<dim>> ring_nodes(const LinearElasticProblem<dim> &problem,
+    std::vector<RingNode<dim>> ring_nodes(const Discretization<dim> &problem,
                                           const std::string &name, const std::string &where)
     {
       const auto dof_points =
@@ -48,7 +48,7 @@ namespace compliant
   } // namespace
 
   template <int dim>
-  void add_pin_joints(const LinearElasticProblem<dim> &problem, const std::string &spec,
+  void add_pin_joints(const Discretization<dim> &problem, const std::string &spec,
                       const std::string &where, AffineConstraints<double> &constraints)
   {
     std::set<types::global_dof_index> tied; // eye DoFs already made dependent
@@ -153,8 +153,8 @@ namespace compliant
       }
   }
 
-  template void add_pin_joints<2>(const LinearElasticProblem<2> &, const std::string &,
+  template void add_pin_joints<2>(const Discretization<2> &, const std::string &,
                                   const std::string &, AffineConstraints<double> &);
-  template void add_pin_joints<3>(const LinearElasticProblem<3> &, const std::string &,
+  template void add_pin_joints<3>(const Discretization<3> &, const std::string &,
                                   const std::string &, AffineConstraints<double> &);
 } // namespace compliant

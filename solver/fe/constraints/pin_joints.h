@@ -11,7 +11,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
-#include "elasticity/linear_elastic_problem.h"
+#include "discretization/discretization.h"
 
 #include <string>
 
@@ -23,6 +23,6 @@ namespace compliant
   // Throws std::invalid_argument naming `where`: unknown boundary, nodes that do not match, an
   // eye that is supported or in another pin.
   template <int dim>
-  void add_pin_joints(const LinearElasticProblem<dim> &problem, const std::string &spec,
+  void add_pin_joints(const Discretization<dim> &problem, const std::string &spec,
                       const std::string &where, dealii::AffineConstraints<double> &constraints);
 } // namespace compliant

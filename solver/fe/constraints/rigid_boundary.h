@@ -19,7 +19,7 @@
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
-#include "elasticity/boundary_conditions.h"
+#include "discretization/boundary_conditions.h"
 
 #include <vector>
 

@@ -71,14 +71,7 @@ namespace compliant
                                                   const MeshedGeometry &geometry,
                                                   MPI_Comm              communicator,
                                                   const MeshPartitionChoice &partition)
-    : parameters(parameters)
-    , geometry(geometry)
-    , communicator(communicator)
-    , mesh_partition(partition)
-    , triangulation_storage(make_triangulation<dim>(partition.partition, communicator))
-    , triangulation(*triangulation_storage)
-    , dof_handler(triangulation)
-    , thickness(dim == 2 ? parameters.thickness : 1.0)
+    : Discretization<dim>(parameters, geometry, communicator, partition)
   {}
 
   template <int dim>
@@ -172,58 +165,27 @@ namespace compliant
   template <int dim>
   void LinearElasticProblem<dim>::setup_discretization()
   {
-    if (geometry.dimension != dim)
-      throw std::invalid_argument("Model = " + parameters.model + " needs a " +
-                                  std::to_string(dim) + "D mesh, but '" + parameters.mesh_file +
-                                  "' is " + std::to_string(geometry.dimension) + "D");
-    create_triangulation(triangulation, geometry, parameters.global_refinements,
-                         parameters.adaptive_refinements, parameters.element_degree);
-
-    const unsigned int degree = parameters.element_degree;
-    if (triangulation.all_reference_cells_are_hyper_cube())
-      {
-        fe              = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
-        mapping         = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
-        quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
-        face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
-      }
-    else if (triangulation.all_reference_cells_are_simplex())
-      {
-        if (degree > 2) // FE_SimplexP<2>(3) crashes in deal.II 9.4.1
-          throw std::invalid_argument("Discretization/Element degree: triangles and tetrahedra "
-                                      "support degree 1 or 2, not " + std::to_string(degree));
-        fe              = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
-        mapping         = std::make_unique<CurvedSimplexMapping<dim>>(mapping_degree(geometry.curved, degree));
-        quadrature      = std::make_unique<QGaussSimplex<dim>>(degree + 1);
-        face_quadrature = std::make_unique<QGaussSimplex<dim - 1>>(degree + 1);
-      }
-    else
-      throw std::invalid_argument("mesh '" + parameters.mesh_file + "' mixes cell types");
+    this->check_mesh_dimension();
+    this->create_mesh();
+    this->choose_element(false);
     mixed = parameters.formulation == "mixed";
     if (mixed)
       {
-        if (dim == 2 && parameters.model == "plane stress")
+        if (plane_stress)
           throw std::invalid_argument("Discretization/Formulation = mixed: plane stress does not lock "
                                       "(the thickness strain takes up the volume change); use "
                                       "displacement, or plane strain or 3d");
-        if (!triangulation.all_reference_cells_are_hyper_cube() || degree < 2)
+        if (!triangulation.all_reference_cells_are_hyper_cube() || parameters.element_degree < 2)
           throw std::invalid_argument("Discretization/Formulation = mixed needs quadrilaterals or "
                                       "hexahedra and Element degree 2 or 3 (Q2-P1, Q3-P2)");
-        fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim, FE_DGP<dim>(degree - 1), 1);
+        this->choose_element(true);
       }
-
-    materials           = assign_materials(parameters.materials, geometry.material_ids,
-                                           parameters.unit_system);
-    boundary_conditions = resolve_boundary_conditions<dim>(parameters, geometry.boundary_ids);
-
-    dof_handler.distribute_dofs(*fe);
-    locally_owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    this->assign_materials();
+    this->resolve_boundary_conditions();
+    this->distribute_dofs();
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    constraints.close();
-    hanging_node_constraints.copy_from(constraints);
+    constraints.copy_from(hanging_node_constraints);
     rigid_boundaries.clear();
     for (const auto &load : boundary_conditions.rigid)
       rigid_boundaries.emplace_back(load, dof_handler, *mapping, hanging_node_constraints, communicator);
@@ -678,12 +640,6 @@ namespace compliant
     return residual;
   }
 
-  template <int dim>
-  std::map<std::string, double> LinearElasticProblem<dim>::expression_variables() const
-  {
-    return compliant::expression_variables(parameters.geometry_parameters,
-                                           materials.begin()->second, thickness);
-  }
 
   template class LinearElasticProblem<2>;
   template class LinearElasticProblem<3>;

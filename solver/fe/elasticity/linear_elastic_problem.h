@@ -13,11 +13,7 @@
 #include <deal.II/lac/petsc_vector.h>
 
 #include "constraints/rigid_boundary.h"
-#include "elasticity/boundary_conditions.h"
-#include "elasticity/material.h"
-#include "input/case_file.h"
-#include "mesh/gmsh_geometry.h"
-#include "mesh/mesh_partition.h"
+#include "discretization/discretization.h"
 
 #include <memory>
 
@@ -35,10 +31,14 @@ namespace compliant
   };
 
   template <int dim>
-  class LinearElasticProblem
+  class LinearElasticProblem : public Discretization<dim>
   {
   public:
-    static constexpr int dimension = dim;
+    using Base = Discretization<dim>;
+    using Base::parameters, Base::geometry, Base::communicator, Base::mesh_partition, Base::triangulation,
+      Base::fe, Base::mapping, Base::quadrature, Base::face_quadrature, Base::dof_handler,
+      Base::locally_owned_dofs, Base::locally_relevant_dofs, Base::hanging_node_constraints, Base::materials,
+      Base::boundary_conditions, Base::thickness, Base::mixed, Base::plane_stress;
 
     // The mesh is shared unless the analysis chose to distribute it (mesh/mesh_partition.h).
     LinearElasticProblem(const CaseParameters &parameters, const MeshedGeometry &geometry,
@@ -78,29 +78,13 @@ namespace compliant
     // f_int(u) - f_ext without constraints: nonzero only where supports act, the reactions.
     dealii::PETScWrappers::MPI::Vector reaction_forces() const;
 
-    // Everything the quantities and the output read.
-    const CaseParameters                       &parameters;
-    const MeshedGeometry                       &geometry;
-    MPI_Comm                                    communicator;
-    MeshPartitionChoice                          mesh_partition;
-    std::unique_ptr<dealii::parallel::TriangulationBase<dim>> triangulation_storage;
-    dealii::parallel::TriangulationBase<dim>    &triangulation;
-    std::unique_ptr<dealii::FiniteElement<dim>> fe;
-    std::unique_ptr<dealii::Mapping<dim>>       mapping;
-    std::unique_ptr<dealii::Quadrature<dim>>    quadrature;
-    std::unique_ptr<dealii::Quadrature<dim - 1>> face_quadrature;
-    dealii::DoFHandler<dim>                     dof_handler;
-    dealii::IndexSet                            locally_owned_dofs, locally_relevant_dofs;
+    // Everything the quantities and the output read, beyond the discretization: the support
+    // constraints (hanging nodes included).
     dealii::AffineConstraints<double>           constraints;
-    dealii::AffineConstraints<double>           hanging_node_constraints; // adaptive meshes only
-    std::map<int, Material>                     materials;
-    BoundaryConditions<dim>                     boundary_conditions;
     // Boundary conditions/Rigid, linearised about the reference configuration.
     std::vector<RigidBoundary<dim>>             rigid_boundaries;
-    double                                      thickness; // 1 in 3D
-    // Discretization/Formulation = mixed: u-p with a discontinuous pressure, sigma = 2 mu eps - p I,
-    // div u + p / lambda = 0 weakly (the pressure is the last component).
-    bool                                        mixed = false;
+    // Discretization/Formulation = mixed (the base's `mixed`): u-p with a discontinuous pressure,
+    // sigma = 2 mu eps - p I, div u + p / lambda = 0 weakly (the pressure is the last component).
     // The quantities' interface shared with the finite-strain problem.
     static constexpr bool   geometrically_nonlinear = false;
     static constexpr double load_factor             = 1;
@@ -117,10 +101,6 @@ namespace compliant
     dealii::PETScWrappers::MPI::Vector       external_forces; // C^T f (hanging nodes condensed)
     dealii::PETScWrappers::MPI::Vector       solution; // ghosted (locally relevant)
     SolverStatistics                         statistics;
-
-    // Names usable in Derived and Checks expressions: geometry parameters, thickness, and E, nu,
-    // G of the first body's material.
-    std::map<std::string, double> expression_variables() const;
 
   private:
     void make_constraints();

@@ -108,18 +108,11 @@ namespace compliant
                                                 const MeshedGeometry       &geometry,
                                                 MPI_Comm                    communicator,
                                                 const MeshPartitionChoice  &partition)
-    : parameters(parameters)
+    : Discretization<dim>(parameters, geometry, communicator, partition)
     , settings(settings)
-    , geometry(geometry)
-    , communicator(communicator)
-    , mesh_partition(partition)
-    , triangulation_storage(make_triangulation<dim>(partition.partition, communicator))
-    , triangulation(*triangulation_storage)
-    , dof_handler(triangulation)
-    , thickness(dim == 2 ? parameters.thickness : 1.0)
-    , mixed(settings.mixed)
-    , plane_stress(dim == 2 && parameters.model == "plane stress")
-  {}
+  {
+    mixed = settings.mixed;
+  }
 
   template <int dim>
   FiniteStrainProblem<dim>::~FiniteStrainProblem() = default;
@@ -138,34 +131,22 @@ namespace compliant
   template <int dim>
   void FiniteStrainProblem<dim>::setup()
   {
-    if (geometry.dimension != dim)
-      throw std::invalid_argument("Model = " + parameters.model + " needs a " +
-                                  std::to_string(dim) + "D mesh, but '" + parameters.mesh_file +
-                                  "' is " + std::to_string(geometry.dimension) + "D");
+    this->check_mesh_dimension();
     if (plane_stress && mixed)
       throw std::invalid_argument("Finite strain/Formulation: plane stress is displacement-only "
                                   "(the thickness strain takes up the volume change, nothing locks)");
-    create_triangulation(triangulation, geometry, parameters.global_refinements,
-                         parameters.adaptive_refinements, parameters.element_degree);
+    this->create_mesh();
     if (!triangulation.all_reference_cells_are_hyper_cube())
       throw std::invalid_argument("Finite strain: the mesh must be quadrilaterals/hexahedra");
+    this->choose_element(mixed);
 
-    const unsigned int degree = parameters.element_degree;
-    if (mixed)
-      fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim, FE_DGP<dim>(degree - 1), 1);
-    else
-      fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
-    mapping         = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
-    quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
-    face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
-
-    materials = assign_materials(parameters.materials, geometry.material_ids, parameters.unit_system);
+    this->assign_materials();
     for (const auto &[id, material] : materials)
       laws.emplace(id, HyperelasticLaw(settings.law, material, settings.mooney_rivlin_ratio));
     if (mixed && !laws.begin()->second.supports_mixed())
       throw std::invalid_argument("Finite strain/Formulation: the mixed formulation needs the "
                                   "neo-Hookean or Mooney-Rivlin law");
-    boundary_conditions = resolve_boundary_conditions<dim>(parameters, geometry.boundary_ids);
+    this->resolve_boundary_conditions();
     if (!boundary_conditions.total_forces.empty())
       throw std::invalid_argument("Loads/Total force: not available in finite strain (the loaded "
                                   "area changes); use Traction (dead, per reference area)");
@@ -186,14 +167,8 @@ namespace compliant
     for (const auto &[id, expressions] : follower_pressures)
       make_parser<dim>(expressions, parameters.geometry_parameters, "Finite strain/Follower pressure");
 
-    dof_handler.distribute_dofs(*fe);
-    locally_owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    this->distribute_dofs();
     solution.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
-    hanging_node_constraints.clear();
-    hanging_node_constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, hanging_node_constraints);
-    hanging_node_constraints.close();
 
     rigid_boundaries.clear();
     for (const auto &load : boundary_conditions.rigid)
@@ -545,160 +520,6 @@ namespace compliant
   }
 
   template <int dim>
-  NewtonReport FiniteStrainProblem<dim>::solve_to(const double target)
-  {
-    NewtonReport               report;
-    PETScWrappers::MPI::Vector u(locally_owned_dofs, communicator), du(locally_owned_dofs, communicator);
-    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator);
-    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
-    u       = solution;
-    ghosted = solution;
-    const auto homogeneous = make_constraints(target, true, ghosted);
-    LinearSolverSettings direct{"direct", 1e-12, 1, parameters.petsc_options};
-    // Newton steps by CG + GAMG on the tangent (block size, rigid-body modes of the reference
-    // configuration as near null space) only when asked: on a 3D TPU leaf of 5e4 DoFs it took
-    // 108 s against MUMPS's 78 s (README, Speed). MUMPS again if CG fails (an indefinite tangent
-    // near a limit point breaks CG).
-    const std::string &method = parameters.solver_method;
-    // (not on the unsymmetric tangent of a 3D rigid boundary under a moment)
-    const bool iterative = !mixed && !iterative_failed && method == "cg-amg" &&
-                           !(dim == 3 && !rigid_boundaries.empty());
-    LinearSolverSettings amg{"cg-amg", 1e-10, 500, parameters.petsc_options};
-    const auto modes = iterative ? rigid_body_modes(*mapping, dof_handler, communicator) :
-                                   std::vector<PETScWrappers::MPI::Vector>();
-
-    // Force scale for the convergence test: internal forces including the reactions.
-    PETScWrappers::MPI::Vector full(locally_owned_dofs, communicator);
-
-    try
-      {
-        for (unsigned int it = 0; it < settings.max_newton_iterations; ++it)
-          {
-            if (stop_requested && stop_requested())
-              throw RunInterrupted();
-            ghosted                = u;
-            const auto constraints = make_constraints(target, false, ghosted);
-            const bool matrix_free = matrix_free_tangent();
-            Timer      assembly_timer;
-            assemble(ghosted, target, &constraints, !matrix_free, rhs, it > 0 ? &full : nullptr);
-            tangent_assembly_seconds += assembly_timer.wall_time();
-            const double r = rhs.l2_norm();
-            report.residual = r;
-            if (std::getenv("COMPLIANT_DEBUG_NEWTON"))
-              {
-                const double scale = it > 0 ? full.l2_norm() : 0.; // collective
-                if (Utilities::MPI::this_mpi_process(communicator) == 0)
-                  std::cout << "    it " << it << " residual " << r << " scale " << scale
-                            << std::endl;
-              }
-            if (it > 0)
-              {
-                const double scale    = std::max(full.l2_norm(), 1e-300);
-                report.residual_scale = scale;
-                if (r <= settings.residual_tolerance * scale)
-                  {
-                    report.iterations = it;
-                    solution          = u;
-                    load_factor       = target;
-                    return report;
-                  }
-              }
-            if (!std::isfinite(r))
-              throw StepFailure("the residual is not finite");
-            du = 0;
-            // The residual the line search measures against: with the prescribed increment
-            // moved to the right-hand side (the assembled path does that in r itself).
-            double reference = r;
-            Timer solve_timer;
-            if (matrix_free)
-              try
-                {
-                  total_linear_iterations += solve_matrix_free(ghosted, rhs, constraints, du);
-                  reference = std::max(r, tangent_multigrid->statistics().lifted_rhs_norm);
-                }
-              catch (const std::exception &e)
-                {
-                  // An indefinite tangent (past a limit point) or a failed level state: the
-                  // exact solver from here on, with the tangent assembled after all.
-                  iterative_failed  = true;
-                  iterative_failure = e.what();
-                  tangent_multigrid.reset();
-                  if (Utilities::MPI::this_mpi_process(communicator) == 0)
-                    std::cout << "Linear solver: matrix-free p-multigrid failed on the tangent ("
-                              << e.what() << "); MUMPS from here on" << std::endl;
-                  Timer reassembly_timer;
-                  assemble(ghosted, target, &constraints, true, rhs);
-                  tangent_assembly_seconds += reassembly_timer.wall_time();
-                  du = 0;
-                  solve_linear_system(tangent, du, rhs, {}, direct);
-                }
-            else if (iterative && !iterative_failed)
-              try
-                {
-                  total_linear_iterations += solve_linear_system(tangent, du, rhs, modes, amg, dim);
-                }
-              catch (const std::runtime_error &e)
-                {
-                  iterative_failed  = true;
-                  iterative_failure = e.what();
-                  if (Utilities::MPI::this_mpi_process(communicator) == 0)
-                    std::cout << "Linear solver: CG + GAMG failed on the tangent (" << e.what()
-                              << "); MUMPS from here on" << std::endl;
-                  du = 0;
-                  solve_linear_system(tangent, du, rhs, {}, direct);
-                }
-            else
-              solve_linear_system(tangent, du, rhs, {}, direct);
-            ++total_linear_solves;
-            linear_solve_seconds += solve_timer.wall_time();
-            constraints.distribute(du);
-            // Backtracking only against a step that inverts elements or blows the residual up
-            // by orders of magnitude: a plain residual-decrease test rejects good Newton steps
-            // of slender structures, whose residual rises for an iteration before it collapses.
-            // Dirichlet values are re-imposed relative to the current state every iteration,
-            // so a shortened step is safe.
-            double alpha = 1;
-            for (unsigned int cut = 0; cut < settings.line_search_steps; ++cut)
-                {
-                  PETScWrappers::MPI::Vector trial = u;
-                  add_correction(trial, alpha, du);
-                  double trial_norm;
-                  try
-                    {
-                      trial_norm = residual_norm(trial, target, homogeneous);
-                    }
-                  catch (const StepFailure &)
-                    {
-                      trial_norm = std::numeric_limits<double>::infinity();
-                    }
-                  if (trial_norm < 1e3 * std::max(reference, report.residual_scale))
-                    break;
-                  alpha /= 2;
-                  ++report.line_search_cuts;
-                }
-            add_correction(u, alpha, du);
-            // At the round-off floor of the residual the correction tells convergence.
-            if (it > 0 && alpha * du.l2_norm() <= 1e-10 * u.l2_norm())
-              {
-                report.iterations = it + 1;
-                solution          = u;
-                load_factor       = target;
-                return report;
-              }
-          }
-        throw StepFailure("Newton did not converge in " +
-                          std::to_string(settings.max_newton_iterations) +
-                          " iterations (residual " + std::to_string(report.residual) + ")");
-      }
-    catch (const std::runtime_error &e)
-      {
-        // solution is untouched: the converged state of the previous step remains
-        throw StepFailure(e.what());
-      }
-  }
-
-
-  template <int dim>
   void FiniteStrainProblem<dim>::add_correction(PETScWrappers::MPI::Vector &u, const double alpha,
                                                 const PETScWrappers::MPI::Vector &du) const
   {
@@ -969,8 +790,7 @@ namespace compliant
   template <int dim>
   std::map<std::string, double> FiniteStrainProblem<dim>::expression_variables() const
   {
-    auto variables = compliant::expression_variables(parameters.geometry_parameters,
-                                                     materials.begin()->second, thickness);
+    auto variables           = Base::expression_variables();
     variables["load_factor"] = load_factor;
     return variables;
   }

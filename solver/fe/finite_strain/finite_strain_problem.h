@@ -1,7 +1,7 @@
 // Total-Lagrangian finite-strain elasticity (plane strain and 3D): displacement-only, or mixed
 // displacement-pressure (Q_p / discontinuous P_(p-1) pressure) against volumetric locking.
-// Newton-Raphson with the consistent tangent and a backtracking line search; loads and imposed
-// motions are scaled by a load factor that the analysis steps.
+// Newton-Raphson (nonlinear/newton.h) with the consistent tangent and a backtracking line search;
+// loads and imposed motions are scaled by a load factor that the path driver steps.
 #pragma once
 
 #include <deal.II/base/index_set.h>
@@ -15,12 +15,9 @@
 #include <deal.II/lac/petsc_vector.h>
 
 #include "constraints/rigid_boundary.h"
-#include "elasticity/boundary_conditions.h"
-#include "elasticity/material.h"
+#include "discretization/discretization.h"
 #include "finite_strain/hyperelastic_law.h"
-#include "input/case_file.h"
-#include "mesh/gmsh_geometry.h"
-#include "mesh/mesh_partition.h"
+#include "nonlinear/newton.h"
 
 #include <functional>
 #include <memory>
@@ -47,32 +44,18 @@ namespace compliant
     unsigned    line_search_steps  = 5;
   };
 
-  // A load step that did not converge; the analysis cuts the step back.
-  struct StepFailure : std::runtime_error
-  {
-    using std::runtime_error::runtime_error;
-  };
-
-  // A load step stopped because the run was asked to stop (a signal); not a runtime_error, so
-  // that no step cutting catches it. The converged state of the previous step remains.
-  struct RunInterrupted : std::exception
-  {
-    const char *what() const noexcept override { return "interrupted"; }
-  };
-
-  struct NewtonReport
-  {
-    unsigned int iterations = 0;
-    double       residual   = 0;
-    double       residual_scale = 0; // internal force norm the residual is measured against
-    unsigned int line_search_cuts = 0;
-  };
+  template <int dim>
+  class FiniteStrainNewtonSystem; // finite_strain_newton.cc: this problem as Newton sees it
 
   template <int dim>
-  class FiniteStrainProblem
+  class FiniteStrainProblem : public Discretization<dim>
   {
   public:
-    static constexpr int dimension = dim;
+    using Base = Discretization<dim>;
+    using Base::parameters, Base::geometry, Base::communicator, Base::mesh_partition, Base::triangulation,
+      Base::fe, Base::mapping, Base::quadrature, Base::face_quadrature, Base::dof_handler,
+      Base::locally_owned_dofs, Base::locally_relevant_dofs, Base::hanging_node_constraints, Base::materials,
+      Base::boundary_conditions, Base::thickness, Base::mixed, Base::plane_stress;
 
     FiniteStrainProblem(const CaseParameters &parameters, const FiniteStrainSettings &settings,
                         const MeshedGeometry &geometry, MPI_Comm communicator,
@@ -129,30 +112,13 @@ namespace compliant
     dealii::PETScWrappers::MPI::Vector reaction_forces() const;
     std::map<std::string, double>      expression_variables() const;
 
-    const CaseParameters                        &parameters;
     const FiniteStrainSettings                  &settings;
-    const MeshedGeometry                        &geometry;
-    MPI_Comm                                     communicator;
-    MeshPartitionChoice                          mesh_partition;
-    std::unique_ptr<dealii::parallel::TriangulationBase<dim>> triangulation_storage;
-    dealii::parallel::TriangulationBase<dim>    &triangulation;
-    std::unique_ptr<dealii::FiniteElement<dim>>  fe;
-    std::unique_ptr<dealii::Mapping<dim>>        mapping;
-    std::unique_ptr<dealii::Quadrature<dim>>     quadrature;
-    std::unique_ptr<dealii::Quadrature<dim - 1>> face_quadrature;
-    dealii::DoFHandler<dim>                      dof_handler;
-    dealii::IndexSet                             locally_owned_dofs, locally_relevant_dofs;
-    std::map<int, Material>                      materials;
     std::map<int, HyperelasticLaw>               laws;
-    BoundaryConditions<dim>                      boundary_conditions;
-    double                                       thickness = 1;
     // Asked (collectively) before every Newton iteration; true stops the step with
     // RunInterrupted. Empty: never.
     std::function<bool()>                        stop_requested;
     double                                       load_factor = 0; // of the current state
     static constexpr bool                        geometrically_nonlinear = true;
-    bool                                         mixed       = false;
-    bool                                         plane_stress = false;
 
     dealii::PETScWrappers::MPI::Vector solution; // ghosted, converged state
     // Boundary conditions/Rigid; linearised at the state of the latest make_constraints.
@@ -169,11 +135,11 @@ namespace compliant
 
 
   private:
+    friend class FiniteStrainNewtonSystem<dim>;
     // The law's response at one point: plane stress (2D) or plane strain/3D.
     StressResponse<dim> material_response(const HyperelasticLaw &law,
                                           const dealii::SymmetricTensor<2, dim> &E,
                                           double pressure) const;
-    dealii::AffineConstraints<double> hanging_node_constraints; // adaptive meshes only
     // Dirichlet values at load factor `lambda` minus the current displacement (first Newton
     // iteration), or homogeneous (later iterations).
     // Rigid boundaries are linearised at u; for_sparsity: their lines name every DoF that may

@@ -15,7 +15,7 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include "elasticity/material.h"
+#include "materials/material.h"
 
 #include <string>
 

@@ -1,6 +1,6 @@
 #include "input/case_file.h"
 
-#include "analyses/analysis.h"
+#include "input/analysis_declarations.h"
 #include "input/spec_list.h"
 
 #include <cstdio>
@@ -25,14 +25,16 @@ namespace compliant
                       "Kinematic model: 2D plane stress (uses Material/Thickness), 2D plane "
                       "strain, or 3D solid. Must match the dimension of the mesh.");
     std::string names, documentation;
-    for (const auto &a : analyses())
+    if (registered_analyses().empty())
+      throw std::logic_error("no analysis registered before the case was read");
+    for (const auto &a : registered_analyses())
       {
         names += (names.empty() ? "" : "|") + a.name;
         documentation += " '" + a.name + "': " + a.documentation + ".";
       }
     prm.declare_entry("Analysis", "linear static", Patterns::Selection(names),
                       "Kind of analysis." + documentation);
-    for (const auto &a : analyses())
+    for (const auto &a : registered_analyses())
       a.declare_parameters(prm);
 
     prm.enter_subsection("Geometry");

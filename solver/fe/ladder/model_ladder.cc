@@ -9,7 +9,7 @@
 #include "input/spec_list.h"
 #include "quantities/comparison.h"
 #include "quantities/out_of_plane_bound.h"
-#include "elasticity/material.h"
+#include "materials/material.h"
 #include "input/expression.h"
 #include <closed_forms/registry.h>
 #include "ladder/adaptive_refinement.h"

@@ -3,7 +3,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
-#include "elasticity/material.h"
+#include "materials/material.h"
 #include "input/case_geometry.h"
 #include "input/expression.h"
 #include "input/spec_list.h"

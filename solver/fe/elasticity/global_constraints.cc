@@ -1,4 +1,4 @@
-#include "constraints/global_constraints.h"
+#include "elasticity/global_constraints.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>

@@ -1,4 +1,4 @@
-#include "elasticity/material.h"
+#include "materials/material.h"
 
 #include "input/spec_list.h"
 

@@ -1,4 +1,4 @@
-#include "elasticity/boundary_conditions.h"
+#include "discretization/boundary_conditions.h"
 
 #include "input/expression.h"
 #include "input/spec_list.h"

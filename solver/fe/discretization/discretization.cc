@@ -1,0 +1,112 @@
+#include "discretization/discretization.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgp.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include "mesh/curved_simplex_mapping.h"
+#include "mesh/mesh_reader.h"
+
+namespace compliant
+{
+  using namespace dealii;
+
+  template <int dim>
+  Discretization<dim>::Discretization(const CaseParameters &parameters, const MeshedGeometry &geometry,
+                                      MPI_Comm communicator, const MeshPartitionChoice &partition)
+    : parameters(parameters)
+    , geometry(geometry)
+    , communicator(communicator)
+    , mesh_partition(partition)
+    , triangulation_storage(make_triangulation<dim>(partition.partition, communicator))
+    , triangulation(*triangulation_storage)
+    , dof_handler(triangulation)
+    , thickness(dim == 2 ? parameters.thickness : 1.0)
+    , plane_stress(dim == 2 && parameters.model == "plane stress")
+  {}
+
+  template <int dim>
+  Discretization<dim>::~Discretization() = default;
+
+  template <int dim>
+  void Discretization<dim>::check_mesh_dimension() const
+  {
+    if (geometry.dimension != dim)
+      throw std::invalid_argument("Model = " + parameters.model + " needs a " + std::to_string(dim) +
+                                  "D mesh, but '" + parameters.mesh_file + "' is " +
+                                  std::to_string(geometry.dimension) + "D");
+  }
+
+  template <int dim>
+  void Discretization<dim>::create_mesh()
+  {
+    create_triangulation(triangulation, geometry, parameters.global_refinements, parameters.adaptive_refinements,
+                         parameters.element_degree);
+  }
+
+  template <int dim>
+  void Discretization<dim>::choose_element(const bool with_pressure)
+  {
+    const unsigned int degree = parameters.element_degree;
+    if (triangulation.all_reference_cells_are_hyper_cube())
+      {
+        if (with_pressure)
+          fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim, FE_DGP<dim>(degree - 1), 1);
+        else
+          fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
+        mapping         = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
+        quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
+        face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
+      }
+    else if (triangulation.all_reference_cells_are_simplex() && !with_pressure)
+      {
+        if (degree > 2) // FE_SimplexP<2>(3) crashes in deal.II 9.4.1
+          throw std::invalid_argument("Discretization/Element degree: triangles and tetrahedra "
+                                      "support degree 1 or 2, not " + std::to_string(degree));
+        fe              = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
+        mapping         = std::make_unique<CurvedSimplexMapping<dim>>(mapping_degree(geometry.curved, degree));
+        quadrature      = std::make_unique<QGaussSimplex<dim>>(degree + 1);
+        face_quadrature = std::make_unique<QGaussSimplex<dim - 1>>(degree + 1);
+      }
+    else if (with_pressure)
+      throw std::invalid_argument("the mixed formulation needs quadrilaterals or hexahedra");
+    else
+      throw std::invalid_argument("mesh '" + parameters.mesh_file + "' mixes cell types");
+  }
+
+  template <int dim>
+  void Discretization<dim>::assign_materials()
+  {
+    materials = compliant::assign_materials(parameters.materials, geometry.material_ids, parameters.unit_system);
+  }
+
+  template <int dim>
+  void Discretization<dim>::resolve_boundary_conditions()
+  {
+    boundary_conditions = compliant::resolve_boundary_conditions<dim>(parameters, geometry.boundary_ids);
+  }
+
+  template <int dim>
+  void Discretization<dim>::distribute_dofs()
+  {
+    dof_handler.distribute_dofs(*fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_node_constraints);
+    hanging_node_constraints.close();
+  }
+
+  template <int dim>
+  std::map<std::string, double> Discretization<dim>::expression_variables() const
+  {
+    return compliant::expression_variables(parameters.geometry_parameters, materials.begin()->second, thickness);
+  }
+
+  template class Discretization<2>;
+  template class Discretization<3>;
+} // namespace compliant

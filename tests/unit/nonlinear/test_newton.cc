@@ -1,0 +1,82 @@
+// The generic Newton iteration on a spring with a closed-form answer: quadratic convergence, the
+// line search against an inverting step, no convergence past the limit load, interruption.
+#include "nonlinear/newton.h"
+
+#include <gtest/gtest.h>
+
+#include "softening_spring.h"
+
+using namespace compliant;
+namespace ss = softening_spring;
+
+TEST(Newton, ConvergesQuadraticallyToTheEquilibrium)
+{
+  ss::System     system(0.15);
+  double         u = 0, du = 0;
+  NewtonSettings settings;
+  settings.residual_tolerance = 1e-13;
+  const NewtonReport report = newton_solve(system, u, du, settings);
+  EXPECT_NEAR(ss::force(u), 0.15, 1e-13);
+  EXPECT_LE(report.iterations, 6u);
+  EXPECT_EQ(report.line_search_cuts, 0u);
+  // Quadratic: r_{k+1} <= C r_k^2 with C of order f'' / (2 f') once close.
+  const auto &r = system.residuals;
+  ASSERT_GE(r.size(), 3u);
+  for (std::size_t k = 1; k + 1 < r.size(); ++k)
+    {
+      if (r[k + 1] > 1e-15)
+        {
+          EXPECT_LT(r[k + 1], 10 * r[k] * r[k]) << "iteration " << k;
+        }
+    }
+}
+
+TEST(Newton, LineSearchShortensAStepThatInverts)
+{
+  // The load f(0.4036) = 0.1987; the first tangent, a sixth of the true one, sends the state to
+  // 1.19 and, halved, 0.60, beyond 0.5 where the residual fails; the second halving brings it back.
+  ss::System system(ss::force(0.4036));
+  system.invalid_above       = 0.5;
+  system.first_tangent_scale = 1. / 6;
+  double u = 0, du = 0;
+  const NewtonReport report = newton_solve(system, u, du, NewtonSettings{});
+  EXPECT_EQ(report.line_search_cuts, 2u);
+  EXPECT_NEAR(u, 0.4036, 1e-8);
+}
+
+// Beyond the limit load Newton from the unloaded state either gives up or lands on the far,
+// stiffening branch (u > 1.206): a snap-through the path driver has to recognise as a jump.
+TEST(Newton, BeyondTheLimitLoadJumpsOrGivesUp)
+{
+  const double load = 1.2 * ss::limit_force();
+  {
+    ss::System system(load);
+    double     u = 0, du = 0;
+    newton_solve(system, u, du, NewtonSettings{});
+    EXPECT_GT(u, (3 + std::sqrt(1.8)) / 3.6);
+    EXPECT_NEAR(ss::force(u), load, 1e-9);
+  }
+  ss::System     system(load);
+  double         u = 0, du = 0;
+  NewtonSettings settings;
+  settings.max_iterations = 3;
+  try
+    {
+      newton_solve(system, u, du, settings);
+      FAIL() << "converged in 3 iterations to u = " << u;
+    }
+  catch (const StepFailure &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("did not converge in 3 iterations"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Newton, StopsWhenAsked)
+{
+  ss::System system(0.1);
+  int        asked = 0;
+  system.stop      = [&] { return ++asked > 1; };
+  double u = 0, du = 0;
+  EXPECT_THROW(newton_solve(system, u, du, NewtonSettings{}), RunInterrupted);
+  EXPECT_EQ(system.residuals.size(), 1u);
+}
