@@ -7,7 +7,8 @@
 namespace compliant
 {
   template <int dim>
-  LinearStaticModel<dim> solve_linear_static_model(const RunContext &context, const CaseParameters &p)
+  LinearStaticModel<dim> solve_linear_static_model(const RunContext &context, const CaseParameters &p,
+                                                   const bool keep_matrix)
   {
     MPI_Comm               comm = context.communicator;
     const bool             root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
@@ -18,7 +19,7 @@ namespace compliant
       context, p, p.adaptive_refinements.empty() ? "" : "adaptive refinement (Target/Refinement)");
     model.problem = std::make_unique<LinearElasticProblem<dim>>(p, context.geometry, comm, partition);
     auto &problem      = *model.problem;
-    problem.matrix_free_allowed = true; // one solve of K u = f: no stored matrix needed
+    problem.matrix_free_allowed = !keep_matrix; // one solve of K u = f: no stored matrix needed
     try
       {
         parse_checks(p.checks);
@@ -82,6 +83,6 @@ namespace compliant
     return model;
   }
 
-  template LinearStaticModel<2> solve_linear_static_model<2>(const RunContext &, const CaseParameters &);
-  template LinearStaticModel<3> solve_linear_static_model<3>(const RunContext &, const CaseParameters &);
+  template LinearStaticModel<2> solve_linear_static_model<2>(const RunContext &, const CaseParameters &, bool);
+  template LinearStaticModel<3> solve_linear_static_model<3>(const RunContext &, const CaseParameters &, bool);
 } // namespace compliant

@@ -20,7 +20,9 @@ namespace compliant
   };
 
   // Case-file mistakes throw InputError naming the case file; with --check it stops after the
-  // set-up (stopped_for_check). Prints the mesh and solver lines on rank 0.
+  // set-up (stopped_for_check). Prints the mesh and solver lines on rank 0. keep_matrix: the
+  // stiffness matrix is assembled and kept (no matrix-free solve), for analyses that go on with it.
   template <int dim>
-  LinearStaticModel<dim> solve_linear_static_model(const RunContext &context, const CaseParameters &parameters);
+  LinearStaticModel<dim> solve_linear_static_model(const RunContext &context, const CaseParameters &parameters,
+                                                   bool keep_matrix = false);
 } // namespace compliant

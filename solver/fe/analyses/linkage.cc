@@ -71,9 +71,9 @@ namespace compliant
 
   Analysis linkage_analysis()
   {
-    return {"linkage",
+    return {{"linkage",
             "linear static analysis of links joined by frictionless pins (Extra constraints)",
-            [](dealii::ParameterHandler &) {}, // Extra constraints are declared by 'modal'
+            [](dealii::ParameterHandler &) {}}, // Extra constraints are declared by 'modal'
             [](const RunContext &context) {
               return context.parameters.dimension == 2 ? run<2>(context) : run<3>(context);
             }};

@@ -239,7 +239,7 @@ namespace compliant
 
   Analysis modal_analysis()
   {
-    return {"modal",
+    return {{"modal",
             "natural frequencies and mode shapes (consistent mass, SLEPc shift-and-invert); "
             "supports held fixed, loads ignored; settings in the Modal subsection",
             [](dealii::ParameterHandler &prm) {
@@ -260,7 +260,7 @@ namespace compliant
               prm.declare_entry("Maximum iterations", "1000", dealii::Patterns::Integer(1),
                                 "Krylov-Schur restarts before giving up.");
               prm.leave_subsection();
-            },
+            }},
             [](const RunContext &context) {
               return context.parameters.dimension == 2 ? run<2>(context) : run<3>(context);
             }};

@@ -41,7 +41,7 @@ namespace compliant
     check(EPSCreate(comm, &eps), "EPSCreate");
     check(EPSSetOperators(eps, stiffness, mass), "EPSSetOperators");
     // Symmetric K, symmetric positive semi-definite M (zero on constrained rows).
-    check(EPSSetProblemType(eps, EPS_GHEP), "EPSSetProblemType");
+    check(EPSSetProblemType(eps, settings.definite_second_matrix ? EPS_GHEP : EPS_GNHEP), "EPSSetProblemType");
     check(EPSSetType(eps, EPSKRYLOVSCHUR), "EPSSetType");
     check(EPSSetDimensions(eps, settings.n_modes, PETSC_DEFAULT, PETSC_DEFAULT),
           "EPSSetDimensions");
@@ -70,10 +70,10 @@ namespace compliant
     check(EPSGetConverged(eps, &n_converged), "EPSGetConverged");
     check(EPSGetIterationNumber(eps, &iterations), "EPSGetIterationNumber");
     if (n_converged < static_cast<PetscInt>(settings.n_modes))
-      throw std::runtime_error("modal analysis: only " + std::to_string(n_converged) + " of " +
+      throw std::runtime_error("eigensolver: only " + std::to_string(n_converged) + " of " +
                                std::to_string(settings.n_modes) + " eigenpairs converged in " +
                                std::to_string(iterations) +
-                               " restarts; raise Modal/Maximum iterations or relax Modal/Tolerance");
+                               " restarts; raise the analysis' Maximum iterations or relax its Tolerance");
 
     // SLEPc orders by distance to the target; keep the n nearest, then sort ascending.
     std::vector<double>                             values(settings.n_modes);
@@ -88,8 +88,11 @@ namespace compliant
               "EPSGetEigenpair");
         check(EPSComputeError(eps, i, EPS_ERROR_BACKWARD, &errors[i]), "EPSComputeError");
         values[i] = real_part;
-        mass.vmult(m_x, vectors.back());
-        vectors.back() /= std::sqrt(vectors.back() * m_x); // mass-normalized
+        if (settings.definite_second_matrix)
+          {
+            mass.vmult(m_x, vectors.back());
+            vectors.back() /= std::sqrt(vectors.back() * m_x); // mass-normalized
+          }
       }
     std::vector<unsigned int> order(settings.n_modes);
     std::iota(order.begin(), order.end(), 0u);

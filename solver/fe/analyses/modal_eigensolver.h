@@ -1,5 +1,6 @@
-// Generalized symmetric eigenproblem K x = lambda M x for the lowest natural frequencies:
-// SLEPc Krylov-Schur with shift-and-invert, the inverse (K - sigma M)^-1 by MUMPS LU.
+// Generalized symmetric eigenproblem K x = lambda M x for the eigenvalues nearest a shift (the
+// lowest natural frequencies, the buckling factors nearest zero): SLEPc Krylov-Schur with
+// shift-and-invert, the inverse (K - sigma M)^-1 by MUMPS LU.
 #pragma once
 
 #include <deal.II/lac/petsc_sparse_matrix.h>
@@ -19,6 +20,9 @@ namespace compliant
     double       tolerance      = 1e-10;
     unsigned int max_iterations = 1000;
     std::string  petsc_options; // extra -eps_/-st_ options, applied last
+    // false: the second matrix is symmetric but indefinite (buckling: K x = lambda (-K_sigma) x),
+    // solved as a general problem, and the vectors keep SLEPc's unit 2-norm.
+    bool definite_second_matrix = true;
   };
 
   struct EigenResult

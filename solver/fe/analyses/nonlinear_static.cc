@@ -267,10 +267,10 @@ namespace compliant
 
   Analysis nonlinear_static_analysis()
   {
-    return {"nonlinear static",
+    return {{"nonlinear static",
             "total-Lagrangian finite strain, Newton-Raphson with adaptive load steps (see "
             "subsection Finite strain)",
-            declare,
+            declare},
             [](const RunContext &context) {
               return context.parameters.dimension == 2 ? run_nonlinear_static<2>(context) :
                                                          run_nonlinear_static<3>(context);

@@ -1,5 +1,6 @@
 #include "app/analysis_list.h"
 
+#include "analyses/buckling.h"
 #include "analyses/linkage.h"
 #include "analyses/modal.h"
 #include "analyses/nonlinear_static.h"
@@ -10,7 +11,7 @@ namespace compliant
   const std::vector<Analysis> &analyses()
   {
     static const std::vector<Analysis> list = {linear_static_analysis(), nonlinear_static_analysis(),
-                                               modal_analysis(), linkage_analysis()};
+                                               modal_analysis(), buckling_analysis(), linkage_analysis()};
     return list;
   }
 

@@ -1,0 +1,147 @@
+#include "analyses/buckling.h"
+
+#include <deal.II/base/timer.h>
+
+#include "analyses/geometric_stiffness.h"
+#include "analyses/linear_static_model.h"
+#include "analyses/modal_eigensolver.h"
+#include "analyses/modal_fields.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <numeric>
+
+namespace compliant
+{
+  namespace
+  {
+    struct BucklingSettings
+    {
+      unsigned int n_modes;
+      double       tolerance;
+      unsigned int max_iterations;
+    };
+
+    void declare(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Buckling");
+      prm.declare_entry("Number of modes", "4", dealii::Patterns::Integer(1, 200),
+                        "How many buckling factors (those nearest zero, either sign) and mode shapes.");
+      prm.declare_entry("Tolerance", "1e-10", dealii::Patterns::Double(0, 1),
+                        "Relative convergence tolerance of the eigenpairs (SLEPc).");
+      prm.declare_entry("Maximum iterations", "1000", dealii::Patterns::Integer(1),
+                        "Krylov-Schur restarts before giving up.");
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    int run(const RunContext &context)
+    {
+      const auto   &p    = context.parameters;
+      MPI_Comm      comm = context.communicator;
+      const bool    root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      dealii::Timer timer;
+      const BucklingSettings settings{static_cast<unsigned int>(context.prm.get_integer({"Buckling"}, "Number of modes")),
+                                      context.prm.get_double({"Buckling"}, "Tolerance"),
+                                      static_cast<unsigned int>(context.prm.get_integer({"Buckling"}, "Maximum iterations"))};
+
+      // The reference state: the linear static solution under the case's loads, matrix kept.
+      auto model = solve_linear_static_model<dim>(context, p, true);
+      if (model.stopped_for_check)
+        return 0;
+      auto &problem = *model.problem;
+      if (settings.n_modes > problem.dof_handler.n_dofs() / 2)
+        throw InputError("case file '" + p.case_file + "': Buckling/Number of modes = " +
+                         std::to_string(settings.n_modes) + " is too many for " +
+                         std::to_string(problem.dof_handler.n_dofs()) + " DoFs");
+
+      dealii::Timer                            geometric_timer;
+      dealii::PETScWrappers::MPI::SparseMatrix minus_geometric;
+      assemble_geometric_stiffness(problem, minus_geometric);
+      minus_geometric *= -1.; // K phi = lambda (-K_sigma) phi
+      const double geometric_seconds = geometric_timer.wall_time();
+      if (minus_geometric.frobenius_norm() == 0)
+        throw InputError("case file '" + p.case_file + "': the loads and prescribed displacements leave the "
+                         "part unstressed; buckling needs a stress state (Loads, Boundary conditions)");
+
+      EigenSettings eigen;
+      eigen.n_modes                = settings.n_modes;
+      eigen.tolerance              = settings.tolerance;
+      eigen.max_iterations         = settings.max_iterations;
+      eigen.petsc_options          = p.petsc_options;
+      eigen.shift                  = 0;
+      eigen.definite_second_matrix = false;
+      dealii::Timer eigen_timer;
+      EigenResult   result = solve_eigenproblem(problem.system_matrix, minus_geometric, problem.locally_owned_dofs, eigen);
+      const double  eigen_seconds = eigen_timer.wall_time();
+
+      // Nearest zero first, whatever the sign.
+      std::vector<unsigned int> order(result.eigenvalues.size());
+      std::iota(order.begin(), order.end(), 0u);
+      std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+        return std::abs(result.eigenvalues[a]) < std::abs(result.eigenvalues[b]);
+      });
+
+      RunSummary summary = start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
+      summary.settings.insert({"eigensolver", "SLEPc Krylov-Schur, shift-and-invert about 0, MUMPS"});
+      summary.settings.insert({"reference_state", "linear static under the case's loads (load factor 1)"});
+      summary.settings.insert({"solver", problem.solver_method});
+      summary.quantities = model.quantities;
+      auto  &q           = summary.quantities;
+      double worst_error = 0;
+      std::vector<dealii::PETScWrappers::MPI::Vector> modes;
+      bool                                            negative = false;
+      for (unsigned int k = 0; k < order.size(); ++k)
+        {
+          const double factor = result.eigenvalues[order[k]];
+          q["buckling_factor_" + std::to_string(k + 1)] = factor;
+          negative = negative || factor < 0;
+          worst_error = std::max(worst_error, result.backward_errors[order[k]]);
+          modes.push_back(result.eigenvectors[order[k]]);
+        }
+      q["eigen_backward_error_max"] = worst_error;
+      q["eigensolver_iterations"]   = result.iterations;
+      q["time_geometric_stiffness"] = geometric_seconds;
+      q["time_eigensolve"]          = eigen_seconds;
+      q["time_total"]               = timer.wall_time();
+      if (root)
+        {
+          std::cout << "Buckling: " << result.n_converged << " pairs converged, " << result.iterations
+                    << " restarts, " << eigen_seconds << " s\n  mode  load factor\n";
+          for (unsigned int k = 0; k < order.size(); ++k)
+            std::cout << "  " << std::setw(4) << k + 1 << "  " << std::setprecision(10)
+                      << q["buckling_factor_" + std::to_string(k + 1)] << "\n";
+          if (negative)
+            std::cout << "  A negative factor -f: the part buckles under the loads reversed and scaled by f "
+                         "(a stress state with both tension and compression can buckle either way).\n";
+          std::cout << std::flush;
+        }
+
+      // Mode shapes satisfy the supports held at zero.
+      dealii::AffineConstraints<double> homogeneous;
+      homogeneous.reinit(problem.locally_relevant_dofs);
+      problem.add_support_constraints(problem.dof_handler, homogeneous, true);
+      homogeneous.close();
+      for (auto &mode : modes)
+        homogeneous.distribute(mode);
+      finish_run(context, summary, problem.expression_variables(), [&](const std::string &directory) {
+        write_mode_shapes(problem, modes, directory);
+      });
+      return 0;
+    }
+  } // namespace
+
+  Analysis buckling_analysis()
+  {
+    return {{"buckling",
+             "linearized buckling about the linear static state, (K + lambda K_sigma) phi = 0 (SLEPc "
+             "shift-and-invert); the factors nearest zero and their mode shapes; settings in the "
+             "Buckling subsection",
+             declare},
+            [](const RunContext &context) {
+              return context.parameters.dimension == 2 ? run<2>(context) : run<3>(context);
+            }};
+  }
+} // namespace compliant

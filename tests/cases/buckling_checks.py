@@ -1,0 +1,65 @@
+#!/usr/bin/python3
+"""Linearized buckling (Analysis = buckling) against the closed forms of a fixed-free column.
+
+    buckling_checks.py column2d CASE   plane-stress column (L = 100): modes 1-3 against (2n-1)^2 pi^2 E I / (4 L^2)
+    buckling_checks.py column3d CASE   3D column (L = 200): weak-axis and strong-axis first modes
+    buckling_checks.py ranks    CASE   1 and 2 ranks give the same factors
+    buckling_checks.py tension  CASE   the load reversed: factors change sign (the part is pulled)
+
+Reference: Euler's load with Engesser's shear correction P = P_E / (1 + P_E / (kappa G A)), kappa =
+5/6 (Timoshenko and Gere, Theory of Elastic Stability, sec. 2.18). The Q2 columns are converged in
+the mesh (2D: ny = 2, 4, 8 give 513.42, 513.31, 513.28; Q3 513.28), so the bar is the issue's 0.5 %
+on the first modes. The third mode of the 2D column is held to 1.5 %: there the shear correction
+itself is 4 %, and the plane-stress continuum lies 1.0 % below Engesser's first-order estimate.
+"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
+from study import run_case  # noqa: E402
+from case_checks import check, finish  # noqa: E402
+
+E, nu = 200000.0, 0.3
+G = E / (2 * (1 + nu))
+kappa = 5.0 / 6.0
+
+
+def column_load(n, I, A, L):
+    """n-th buckling load of a fixed-free column, Euler with Engesser's shear correction."""
+    euler = (2 * n - 1) ** 2 * math.pi ** 2 * E * I / (4 * L ** 2)
+    return euler / (1 + euler / (kappa * G * A))
+
+
+def compare(q, key, reference, bar, what):
+    value = q[key]
+    error = value / reference - 1
+    print("%s: %s = %.6g, closed form %.6g, %+.3f %%" % (what, key, value, reference, 100 * error))
+    check(abs(error) < bar, "%s within %.1f %% (%+.3f %%)" % (what, 100 * bar, 100 * error))
+
+
+mode, case = sys.argv[1], sys.argv[2]
+if mode == "column2d":
+    H = 5.0
+    q = run_case(case)["quantities"]
+    for n, bar in ((1, 0.005), (2, 0.005), (3, 0.015)):
+        compare(q, "buckling_factor_%d" % n, column_load(n, H ** 3 / 12, H, 100.0), bar, "mode %d" % n)
+elif mode == "column3d":
+    H, W = 10.0, 5.0
+    q = run_case(case)["quantities"]
+    compare(q, "buckling_factor_1", column_load(1, H * W ** 3 / 12, H * W, 200.0), 0.005, "weak axis")
+    # The second factor is the strong axis's first (4 x), below the weak axis's second (9 x).
+    compare(q, "buckling_factor_2", column_load(1, W * H ** 3 / 12, H * W, 200.0), 0.005, "strong axis")
+elif mode == "ranks":
+    one, two = run_case(case, np=1)["quantities"], run_case(case, np=2)["quantities"]
+    for k in sorted(one):
+        if k.startswith("buckling_factor_"):
+            check(abs(one[k] / two[k] - 1) < 1e-8, "%s: 1 rank %.10g, 2 ranks %.10g" % (k, one[k], two[k]))
+elif mode == "tension":
+    compressed = run_case(case)["quantities"]["buckling_factor_1"]
+    pulled = run_case(case, ["Loads/Total force=right: 1 0"])["quantities"]["buckling_factor_1"]
+    print("compressed %.6g, pulled %.6g" % (compressed, pulled))
+    check(abs(pulled / compressed + 1) < 1e-8, "reversing the load reverses the factor's sign")
+else:
+    sys.exit("unknown mode " + mode)
+finish()
