@@ -88,6 +88,23 @@ namespace closed_forms
     return 12.0 * EI / (L * L * L * (1.0 + Phi));
   }
 
+  double
+  euler_column_load(const double L, const double E, const double b, const double h, const double K)
+  {
+    require_positive("L", L);
+    require_positive("K", K);
+    return M_PI * M_PI * E * second_moment_of_area(b, h) / (K * K * L * L);
+  }
+
+  double
+  engesser_column_load(const double L, const double E, const double nu, const double b, const double h,
+                       const double K, const double kappa)
+  {
+    require_positive("kappa", kappa);
+    const double euler = euler_column_load(L, E, b, h, K);
+    return euler / (1.0 + euler / (kappa * shear_modulus(E, nu) * section_area(b, h)));
+  }
+
   // 1 + cos x cosh x = 0 is rewritten as cos x + 1/cosh x = 0 so that cosh never overflows. On
   // [(n-1) pi, n pi] cos x changes sign and 1/cosh x < 1 is too small to remove that change, so each
   // interval holds the n-th root.

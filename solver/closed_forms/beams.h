@@ -35,6 +35,16 @@ namespace closed_forms
   double timoshenko_guided_stiffness(double L, double E, double nu, double b, double h,
                                      double kappa = rectangle_shear_coefficient);
 
+  // Buckling load of a prismatic column, pi^2 E I / (K L)^2 (Euler), K the effective-length factor
+  // of its ends: 2 fixed-free, 1 pinned-pinned, 0.6992 fixed-pinned, 0.5 fixed-fixed; h is the depth
+  // in the buckling direction.
+  double euler_column_load(double L, double E, double b, double h, double K);
+
+  // The same with Engesser's shear correction, P_E / (1 + P_E / (kappa G A)) (Timoshenko and Gere,
+  // Theory of Elastic Stability, sec. 2.18).
+  double engesser_column_load(double L, double E, double nu, double b, double h, double K,
+                              double kappa = rectangle_shear_coefficient);
+
   // n-th positive root x = beta_n L of 1 + cos x cosh x = 0 (clamped-free beam), n >= 1.
   double cantilever_frequency_root(unsigned int n);
 

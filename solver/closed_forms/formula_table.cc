@@ -222,6 +222,31 @@ namespace closed_forms
              return r;
            }});
 
+        const Argument ends = positive("K", "effective-length factor of the ends: 2 fixed-free, 1 pinned-pinned, "
+                                            "0.6992 fixed-pinned, 0.5 fixed-fixed");
+        table.push_back(
+          {"euler_column_load",
+           "buckling load of a column, pi^2 E I / (K L)^2, h the depth in the buckling direction (force)",
+           "Timoshenko and Gere, Theory of Elastic Stability, sec. 2.1-2.3",
+           {length_L(), modulus_E(), width_b(), depth_h(), ends},
+           [](const Args &p) {
+             Result r{euler_column_load(p.at("L"), p.at("E"), p.at("b"), p.at("h"), p.at("K")), {}};
+             check_beam_slenderness(r, p.at("K") * p.at("L"), p.at("h"));
+             return r;
+           }});
+        table.push_back(
+          {"engesser_column_load",
+           "buckling load of a column with shear, P_E / (1 + P_E / (kappa G A)) (force)",
+           "Timoshenko and Gere, Theory of Elastic Stability, sec. 2.18 (Engesser)",
+           {length_L(), modulus_E(), poisson_nu(), width_b(), depth_h(), ends, kappa_arg()},
+           [](const Args &p) {
+             Result r{engesser_column_load(p.at("L"), p.at("E"), p.at("nu"), p.at("b"), p.at("h"), p.at("K"),
+                                           p.at("kappa")),
+                      {}};
+             check_timoshenko_slenderness(r, p.at("K") * p.at("L"), p.at("h"));
+             return r;
+           }});
+
         table.push_back(
           {"euler_bernoulli_guided_stiffness",
            "transverse stiffness of a fixed-guided beam, 12 E I / L^3 (force/length)",

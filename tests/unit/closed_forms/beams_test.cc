@@ -151,3 +151,35 @@ TEST(Beams, TimoshenkoGoodierIsABeamWithItsOwnShearCoefficient)
                   beam, 1e-14 * beam);
     }
 }
+
+// Euler loads against the column equation EI w'''' + P w'' = 0 solved for each pair of ends: the
+// smallest k L = sqrt(P / EI) L is pi/2 (fixed-free), pi (pinned-pinned), the root of tan x = x
+// (fixed-pinned, found here by bisection) and 2 pi (fixed-fixed).
+TEST(Beams, EulerColumnLoadsMatchTheColumnEquation)
+{
+  const double L = 40.0, EI = E * second_moment_of_area(b, h);
+  double lo = M_PI + 0.1, hi = 1.5 * M_PI - 1e-9; // tan x - x changes sign once on (pi, 3 pi / 2)
+  for (int i = 0; i < 200; ++i)
+    {
+      const double mid = 0.5 * (lo + hi);
+      (std::tan(mid) - mid < 0 ? lo : hi) = mid;
+    }
+  const double fixed_pinned_root = 0.5 * (lo + hi);
+  const std::pair<double, double> cases[] = {{2.0, M_PI / 2}, {1.0, M_PI}, {0.5, 2 * M_PI},
+                                             {M_PI / fixed_pinned_root, fixed_pinned_root}};
+  for (const auto &[K, kL] : cases)
+    EXPECT_NEAR(euler_column_load(L, E, b, h, K), kL * kL * EI / (L * L), 1e-12 * EI / (L * L)) << "K = " << K;
+  EXPECT_NEAR(M_PI / fixed_pinned_root, 0.6992, 1e-4); // the factor the registry documents
+}
+
+// Engesser's load lies below Euler's by 1 / (1 + P_E / (kappa G A)) and tends to it for slender columns.
+TEST(Beams, EngesserColumnLoadShearCorrection)
+{
+  const double L = 40.0, K = 2.0;
+  const double euler = euler_column_load(L, E, b, h, K);
+  const double kGA   = rectangle_shear_coefficient * E / (2 * (1 + nu)) * b * h;
+  EXPECT_NEAR(engesser_column_load(L, E, nu, b, h, K), euler / (1 + euler / kGA), 1e-12 * euler);
+  EXPECT_LT(engesser_column_load(L, E, nu, b, h, K), euler);
+  const double slender = 100 * L;
+  EXPECT_NEAR(engesser_column_load(slender, E, nu, b, h, K) / euler_column_load(slender, E, b, h, K), 1.0, 1e-6);
+}

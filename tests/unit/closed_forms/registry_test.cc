@@ -49,7 +49,7 @@ namespace
     {"P", 0.1},   {"M", 1.0},      {"T", 1.0},        {"L", 100.0},       {"l", 5.0},
     {"E", 2000.0}, {"nu", 0.35},   {"b", 3.0},        {"h", 1.5},         {"a", 4.0},
     {"rho", 1.2e-9}, {"n", 2.0},   {"kappa", 5.0 / 6.0}, {"gamma", 0.85}, {"K_theta", 2.65},
-    {"Theta", 0.4}, {"link_length", 60.0}, {"r_i", 10.0}, {"r_o", 20.0}, {"r", 15.0}};
+    {"Theta", 0.4}, {"link_length", 60.0}, {"r_i", 10.0}, {"r_o", 20.0}, {"r", 15.0}, {"K", 2.0}};
 } // namespace
 
 TEST(Registry, NamesAreUniqueSnakeCaseAndDocumented)
@@ -69,7 +69,8 @@ TEST(Registry, NamesAreUniqueSnakeCaseAndDocumented)
         "euler_bernoulli_guided_stiffness", "timoshenko_guided_stiffness", "prbm_pivot_stiffness",
         "prbm_cantilever_force_stiffness", "saint_venant_beta", "saint_venant_alpha",
         "torsion_constant", "saint_venant_torsion_stiffness", "warping_constant",
-        "vlasov_torsion_stiffness", "euler_bernoulli_cantilever_frequency"})
+        "vlasov_torsion_stiffness", "euler_bernoulli_cantilever_frequency", "euler_column_load",
+        "engesser_column_load"})
     EXPECT_EQ(names.count(expected), 1u) << expected;
 }
 
