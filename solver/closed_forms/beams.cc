@@ -105,6 +105,19 @@ namespace closed_forms
     return euler / (1.0 + euler / (kappa * shear_modulus(E, nu) * section_area(b, h)));
   }
 
+  double
+  beam_column_end_moment_stiffness(const double L, const double E, const double b, const double h,
+                                   const double P)
+  {
+    require_positive("L", L);
+    require_positive("E", E);
+    const double EI = E * second_moment_of_area(b, h);
+    const double kL = std::sqrt(std::abs(P) / EI) * L;
+    if (kL < 1e-6) // the series 1 - (kL)^2/3 (compression) or 1 + (kL)^2/3 (tension)
+      return EI / L * (1.0 - (P > 0 ? 1.0 : -1.0) * kL * kL / 3.0);
+    return EI / L * (P > 0 ? kL / std::tan(kL) : kL / std::tanh(kL));
+  }
+
   // 1 + cos x cosh x = 0 is rewritten as cos x + 1/cosh x = 0 so that cosh never overflows. On
   // [(n-1) pi, n pi] cos x changes sign and 1/cosh x < 1 is too small to remove that change, so each
   // interval holds the n-th root.

@@ -45,6 +45,12 @@ namespace closed_forms
   double engesser_column_load(double L, double E, double nu, double b, double h, double K,
                               double kappa = rectangle_shear_coefficient);
 
+  // End-moment stiffness M / theta of a cantilever (fixed-free beam-column) under an axial end force
+  // P that keeps its direction, P > 0 compressive: (E I / L) kL / tan kL, k = sqrt(P / (E I)); in
+  // tension (P < 0) (E I / L) kL / tanh kL; E I / L without axial force. Zero at the buckling load
+  // (kL = pi/2), negative beyond it (Timoshenko and Gere, Theory of Elastic Stability, sec. 1.5).
+  double beam_column_end_moment_stiffness(double L, double E, double b, double h, double P);
+
   // n-th positive root x = beta_n L of 1 + cos x cosh x = 0 (clamped-free beam), n >= 1.
   double cantilever_frequency_root(unsigned int n);
 

@@ -248,6 +248,22 @@ namespace closed_forms
            }});
 
         table.push_back(
+          {"beam_column_end_moment_stiffness",
+           "end-moment stiffness M/theta of a cantilever under an axial end force P (P > 0 "
+           "compressive, keeping its direction): (EI/L) kL/tan kL, in tension kL/tanh kL (moment/rad)",
+           "Timoshenko and Gere, Theory of Elastic Stability, sec. 1.5",
+           {length_L(), modulus_E(), width_b(), depth_h(),
+            signed_value("P", "axial end force, positive in compression")},
+           [](const Args &p) {
+             Result r{beam_column_end_moment_stiffness(p.at("L"), p.at("E"), p.at("b"), p.at("h"), p.at("P")), {}};
+             check_beam_slenderness(r, p.at("L"), p.at("h"));
+             const double critical = euler_column_load(p.at("L"), p.at("E"), p.at("b"), p.at("h"), 2.0);
+             warn_if(r, p.at("P") >= critical,
+                     "P = " + number(p.at("P") / critical) + " P_cr: at or beyond the buckling load the "
+                     "straight cantilever is unstable (stiffness <= 0)");
+             return r;
+           }});
+        table.push_back(
           {"euler_bernoulli_guided_stiffness",
            "transverse stiffness of a fixed-guided beam, 12 E I / L^3 (force/length)",
            "Gere and Timoshenko, Mechanics of Materials; Howell 2001 sec. 5.6",

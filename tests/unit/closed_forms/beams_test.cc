@@ -183,3 +183,51 @@ TEST(Beams, EngesserColumnLoadShearCorrection)
   const double slender = 100 * L;
   EXPECT_NEAR(engesser_column_load(slender, E, nu, b, h, K) / euler_column_load(slender, E, b, h, K), 1.0, 1e-6);
 }
+
+namespace
+{
+  // End rotation of a cantilever with end moment M and dead axial force P (compressive > 0), from
+  // EI w'' = M + P (delta - w), w(0) = w'(0) = 0, delta = w(L): RK4 shooting (linear in delta).
+  double shot_end_rotation(const double L, const double EI, const double P, const double M)
+  {
+    auto shoot = [&](const double delta, double &end_slope) {
+      const int n = 4000;
+      const double dx = L / n;
+      double w = 0, s = 0;
+      auto f = [&](double w_) { return (M + P * (delta - w_)) / EI; };
+      for (int i = 0; i < n; ++i)
+        {
+          const double k1w = s, k1s = f(w);
+          const double k2w = s + 0.5 * dx * k1s, k2s = f(w + 0.5 * dx * k1w);
+          const double k3w = s + 0.5 * dx * k2s, k3s = f(w + 0.5 * dx * k2w);
+          const double k4w = s + dx * k3s, k4s = f(w + dx * k3w);
+          w += dx / 6 * (k1w + 2 * k2w + 2 * k3w + k4w);
+          s += dx / 6 * (k1s + 2 * k2s + 2 * k3s + k4s);
+        }
+      end_slope = s;
+      return w;
+    };
+    double s0, s1;
+    const double w0 = shoot(0, s0), w1 = shoot(1, s1);
+    const double delta = w0 / (1 - (w1 - w0)); // delta = w0 + (w1 - w0) delta
+    double slope;
+    shoot(delta, slope);
+    return slope;
+  }
+} // namespace
+
+// The beam-column stiffness against the shot solution of its differential equation, in compression
+// up to 0.9 of the buckling load and in tension.
+TEST(Beams, BeamColumnEndMomentStiffnessMatchesTheShotSolution)
+{
+  const double L = 40.0, EI = E * second_moment_of_area(b, h), M = 1e-3;
+  const double critical = euler_column_load(L, E, b, h, 2.0);
+  for (const double fraction : {0.0, 0.5, 0.9, -1.0, -3.0})
+    {
+      const double P = fraction * critical;
+      const double K = beam_column_end_moment_stiffness(L, E, b, h, P);
+      EXPECT_NEAR(K * shot_end_rotation(L, EI, P, M) / M, 1.0, 1e-9) << "P = " << fraction << " P_cr";
+    }
+  EXPECT_NEAR(beam_column_end_moment_stiffness(L, E, b, h, 1e-14), EI / L, 1e-9 * EI / L);
+  EXPECT_NEAR(beam_column_end_moment_stiffness(L, E, b, h, critical), 0.0, 1e-12 * EI / L);
+}
