@@ -140,6 +140,16 @@ namespace compliant
         {
           throw InputError("case file '" + p.case_file + "': " + e.what());
         }
+      {
+        const auto &bc = problem.boundary_conditions;
+        if (bc.displacements.empty() && bc.rotations.empty())
+          stepping.unstable_advice = "Load control cannot follow it: drive the structure by a prescribed "
+                                     "displacement to follow it past a limit point";
+        else // a displacement drive passes limit points of the load: what stops it is a bifurcation
+          stepping.unstable_advice = "The run is driven by prescribed displacements or rotations, so this "
+                                     "is a bifurcation (or a limit of the drive itself): an imperfection "
+                                     "(a geometry parameter) selects one branch to follow";
+      }
       if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
                                         problem.dof_handler.n_dofs(), ", " + settings.law + (settings.mixed ? ", mixed u-p" : ", displacement") +
                                           (problem.mesh_partition.partition == MeshPartition::distributed ? ", mesh distributed" : "")))

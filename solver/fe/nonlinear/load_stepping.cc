@@ -46,10 +46,8 @@ namespace compliant
                   std::ostringstream message;
                   message << "equilibrium turned unstable between load factors " << previous << " and "
                           << target << ": the tangent stiffness has " << unstable
-                          << " negative eigenvalue(s) (limit point or bifurcation). Load "
-                          << "control cannot follow it; the last stable load factor is " << previous
-                          << ". Drive the structure by a prescribed "
-                          << "displacement to follow it past the limit point";
+                          << " negative eigenvalue(s) (limit point or bifurcation); the last stable "
+                          << "load factor is " << previous << ". " << settings.unstable_advice;
                   result.failure                 = message.str();
                   result.last_stable_load_factor = previous;
                 }

@@ -26,6 +26,8 @@ namespace compliant
     unsigned int easy_newton_iterations = 6;
     double       step_growth            = 1.5;
     bool         stability_check        = true;
+    // What the stability stop advises; the analysis knows how the path is driven.
+    std::string unstable_advice = "Drive the structure by a prescribed displacement to follow it past the limit point";
   };
 
   // The problem as the path driver sees it.
