@@ -46,6 +46,16 @@ namespace compliant
                         "Smallest increment before the run gives up.");
       prm.declare_entry("Maximum step", "0.25", Patterns::Double(1e-12, 1),
                         "Largest increment; steps grow by 1.5 after easy convergence.");
+      prm.declare_entry("Path", "load steps", Patterns::Selection("load steps|arc length"),
+                        "How the load path is followed. load steps: the load factor rises in "
+                        "adaptive steps (with prescribed displacements: the drive); stops at a "
+                        "limit point of the load. arc length: Crisfield's spherical arc-length "
+                        "continuation, the load factor an unknown; follows loads (not prescribed "
+                        "motion) through limit points and snap-backs to load factor 1, reports "
+                        "every limit point and bifurcation (MUMPS; the step sizes above are "
+                        "load-factor increments along the initial tangent).");
+      prm.declare_entry("Arc length steps", "500", Patterns::Integer(1),
+                        "Path = arc length: most steps before the run stops short of load factor 1.");
       prm.declare_entry("Newton iterations", "25", Patterns::Integer(1),
                         "Newton iterations per step before the step is cut back.");
       prm.declare_entry("Stability check", "true", Patterns::Bool(),
@@ -93,6 +103,35 @@ namespace compliant
       dealii::PETScWrappers::MPI::Vector saved;
       double                             saved_load_factor = 0;
     };
+
+    void report_critical_points(const std::vector<CriticalPoint> &points, const bool root)
+    {
+      if (!root)
+        return;
+      for (const auto &point : points)
+        {
+          std::cout << to_string(point.kind) << " at load factor " << std::setprecision(8) << point.load_factor
+                    << " (between steps at " << point.bracket_low << " and " << point.bracket_high
+                    << "; negative tangent eigenvalues " << point.unstable_before << " -> "
+                    << point.unstable_after << ")" << std::endl;
+        }
+    }
+
+    // limit_point_1, limit_point_2, ..., bifurcation_1, ...: load factors in path order.
+    void add_critical_points(const std::vector<CriticalPoint> &points, Quantities &quantities)
+    {
+      unsigned int limits = 0, bifurcations = 0;
+      for (const auto &point : points)
+        if (point.kind == CriticalPoint::Kind::limit_point)
+          quantities["limit_point_" + std::to_string(++limits)] = point.load_factor;
+        else
+          quantities["bifurcation_" + std::to_string(++bifurcations)] = point.load_factor;
+      if (!points.empty())
+        {
+          quantities["limit_points"] = limits;
+          quantities["bifurcations"] = bifurcations;
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -120,6 +159,14 @@ namespace compliant
       stepping.initial_step          = prm.get_double("Initial step");
       stepping.minimum_step          = prm.get_double("Minimum step");
       stepping.maximum_step          = prm.get_double("Maximum step");
+      const bool        arc_length = prm.get("Path") == "arc length";
+      ArcLengthSettings continuation;
+      continuation.initial_step       = stepping.initial_step;
+      continuation.minimum_step       = stepping.minimum_step;
+      continuation.maximum_step       = stepping.maximum_step;
+      continuation.max_iterations     = settings.max_newton_iterations;
+      continuation.residual_tolerance = settings.residual_tolerance;
+      continuation.max_steps          = prm.get_integer("Arc length steps");
       prm.leave_subsection();
 
       dealii::Timer            timer;
@@ -171,7 +218,9 @@ namespace compliant
       problem.stop_requested = [&]() { return interruption.requested(comm); };
 
       Quantities quantities;
-      const auto on_step = [&](const AcceptedStep &accepted) {
+      // One curve row per converged step; arc-length rows add the path length and stability.
+      const auto record_step = [&](const unsigned int number, const double load_factor, const NewtonReport &report,
+                                   const std::vector<std::pair<std::string, double>> &path_columns) {
         quantities = compute_quantities(problem);
         // Derived quantities per step too, so curves can hold e.g. a link angle.
         try
@@ -184,9 +233,8 @@ namespace compliant
           }
         if (!root)
           return;
-        const auto &report = accepted.newton;
-        std::cout << "step " << std::setw(3) << accepted.number << "  load factor " << std::setw(10)
-                  << std::setprecision(6) << accepted.load_factor << "  Newton " << std::setw(2)
+        std::cout << "step " << std::setw(3) << number << "  load factor " << std::setw(10)
+                  << std::setprecision(6) << load_factor << "  Newton " << std::setw(2)
                   << report.iterations << "  residual " << std::scientific << std::setprecision(2)
                   << report.residual << std::defaultfloat;
         if (report.line_search_cuts)
@@ -195,6 +243,8 @@ namespace compliant
         if (columns.empty())
           {
             curve = "step,load_factor,newton_iterations";
+            for (const auto &[k, v] : path_columns)
+              curve += "," + k;
             for (const auto &[k, v] : quantities)
               if (k.rfind("time_", 0) != 0)
                 {
@@ -204,12 +254,16 @@ namespace compliant
             curve += "\n";
           }
         std::ostringstream line;
-        line << accepted.number << "," << std::setprecision(12) << accepted.load_factor << ","
-             << report.iterations;
+        line << number << "," << std::setprecision(12) << load_factor << "," << report.iterations;
+        for (const auto &[k, v] : path_columns)
+          line << "," << v;
         for (const auto &k : columns)
           line << "," << quantities[k];
         curve += line.str() + "\n";
         write_curve();
+      };
+      const auto on_step = [&](const AcceptedStep &accepted) {
+        record_step(accepted.number, accepted.load_factor, accepted.newton, {});
       };
       const auto on_cutback = [&](const double target, const std::string &why, const double next_step) {
         if (root)
@@ -217,7 +271,38 @@ namespace compliant
                     << next_step << std::endl;
       };
       FiniteStrainLoadPath<dim> path(problem, [&]() { return interruption.requested(comm); });
-      const LoadPathResult      result      = follow_load_path(path, stepping, on_step, on_cutback);
+      LoadPathResult            result;
+      std::vector<CriticalPoint> critical_points;
+      if (arc_length)
+        {
+          const auto on_arc_step = [&](const ArcLengthStep &step) {
+            record_step(step.number, step.load_factor, step.newton,
+                        {{"arc_length", step.arc_length}, {"unstable_modes", step.unstable_modes}});
+          };
+          const auto on_arc_cutback = [&](const double from, const std::string &why, const double next) {
+            if (root)
+              std::cout << "arc-length step from load factor " << from << " failed: " << why
+                        << "; cutting the step to " << next << std::endl;
+          };
+          ArcLengthResult arc;
+          try
+            {
+              arc = problem.follow_arc_length(continuation, on_arc_step, on_arc_cutback);
+            }
+          catch (const std::invalid_argument &e)
+            {
+              throw InputError("case file '" + p.case_file + "': " + e.what());
+            }
+          result.steps             = arc.steps;
+          result.cutbacks          = arc.cutbacks;
+          result.newton_iterations = arc.newton_iterations;
+          result.failure           = arc.failure;
+          result.interrupted       = arc.interrupted;
+          critical_points          = arc.critical_points;
+          report_critical_points(critical_points, root);
+        }
+      else
+        result = follow_load_path(path, stepping, on_step, on_cutback);
       const bool                interrupted = result.interrupted;
       std::string               failure     = result.failure;
       if (interrupted)
@@ -250,6 +335,7 @@ namespace compliant
       summary.quantities["newton_iterations"] = result.newton_iterations;
       if (result.last_stable_load_factor >= 0)
         summary.quantities["last_stable_load_factor"] = result.last_stable_load_factor;
+      add_critical_points(critical_points, summary.quantities);
       summary.quantities["time_tangent_assembly"] = problem.tangent_assembly_seconds;
       summary.quantities["time_linear_solves"]    = problem.linear_solve_seconds;
       summary.quantities["linear_solves"]         = problem.total_linear_solves;

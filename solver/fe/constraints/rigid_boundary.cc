@@ -323,6 +323,35 @@ namespace compliant
   }
 
   template <int dim>
+  void RigidBoundary<dim>::add_candidate_couplings(const DoFHandler<dim>  &dofs,
+                                                   DynamicSparsityPattern &pattern) const
+  {
+    std::vector<types::global_dof_index> indices;
+    for (const unsigned int c : candidates)
+      indices.push_back(boundary_dofs[c].index);
+    std::vector<types::global_dof_index> cell_dofs(dofs.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(cell_dofs);
+          const bool touches = std::any_of(cell_dofs.begin(), cell_dofs.end(), [&](const auto i) {
+            return std::find(indices.begin(), indices.end(), i) != indices.end();
+          });
+          if (!touches)
+            continue;
+          for (const auto candidate : indices)
+            for (const auto j : cell_dofs)
+              {
+                pattern.add(candidate, j);
+                pattern.add(j, candidate);
+              }
+        }
+    for (const auto a : indices)
+      for (const auto b : indices)
+        pattern.add(a, b);
+  }
+
+  template <int dim>
   void RigidBoundary<dim>::add_constraints(AffineConstraints<double> &constraints,
                                            const bool                 for_sparsity) const
   {

@@ -15,6 +15,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
@@ -51,6 +52,14 @@ namespace compliant
 
     // The DoFs the constraints may name as masters: rows a sparsity pattern must hold.
     dealii::IndexSet master_candidates(dealii::types::global_dof_index n_dofs) const;
+
+    // Couples every candidate to every DoF of the locally owned cells that hold a candidate: a
+    // candidate that is a slave in some state (3 of them master, the others follow) condenses
+    // onto the other candidates from cells that touch no other node of the boundary (a rigid
+    // piece inside a surface: the cells beside it). Without these entries PETSc drops the
+    // values silently and Newton stalls.
+    void add_candidate_couplings(const dealii::DoFHandler<dim> &dofs,
+                                 dealii::DynamicSparsityPattern &pattern) const;
 
     // Adds scale * (force, moment) to rhs as nodal forces (through constraints if given).
     // Every rank calls it; rank 0 adds. Needs rhs.compress(add) afterwards.

@@ -182,6 +182,8 @@ namespace compliant
       rows.add_indices(rigid.master_candidates(dof_handler.n_dofs()));
     DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    for (const auto &rigid : rigid_boundaries)
+      rigid.add_candidate_couplings(dof_handler, dsp);
     SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator, rows);
     tangent.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
   }

@@ -17,6 +17,7 @@
 #include "constraints/rigid_boundary.h"
 #include "discretization/discretization.h"
 #include "finite_strain/hyperelastic_law.h"
+#include "nonlinear/arc_length.h"
 #include "nonlinear/newton.h"
 
 #include <functional>
@@ -46,6 +47,8 @@ namespace compliant
 
   template <int dim>
   class FiniteStrainNewtonSystem; // finite_strain_newton.cc: this problem as Newton sees it
+  template <int dim>
+  class FiniteStrainContinuationSystem; // finite_strain_arc_length.cc: as arc-length sees it
 
   template <int dim>
   class FiniteStrainProblem : public Discretization<dim>
@@ -68,6 +71,13 @@ namespace compliant
     // on failure (no convergence, det F <= 0, linear solver) the state is restored and a
     // StepFailure says why.
     NewtonReport solve_to(double load_factor);
+
+    // Arc-length continuation from the current state to load factor 1 (loads only, no prescribed
+    // motion: std::invalid_argument otherwise). on_step sees each converged step with the problem
+    // at its state; the state stays at the last one.
+    ArcLengthResult follow_arc_length(const ArcLengthSettings &settings,
+                                      const std::function<void(const ArcLengthStep &)> &on_step,
+                                      const std::function<void(double, const std::string &, double)> &on_cutback);
 
     // Cauchy stress (and its out-of-plane component in plane strain) from a displacement gradient.
     dealii::SymmetricTensor<2, dim> cauchy_stress(const dealii::Tensor<2, dim> &grad_u,
@@ -136,6 +146,7 @@ namespace compliant
 
   private:
     friend class FiniteStrainNewtonSystem<dim>;
+    friend class FiniteStrainContinuationSystem<dim>;
     // The law's response at one point: plane stress (2D) or plane strain/3D.
     StressResponse<dim> material_response(const HyperelasticLaw &law,
                                           const dealii::SymmetricTensor<2, dim> &E,

@@ -1,5 +1,7 @@
 #include "linear_algebra/petsc_linear_solver.h"
 
+#include "linear_algebra/direct_factorization.h"
+
 #include <petscksp.h>
 
 #include <stdexcept>
@@ -107,26 +109,8 @@ namespace compliant
   }
   unsigned int count_negative_eigenvalues(dealii::PETScWrappers::MPI::SparseMatrix &matrix)
   {
-    Mat      A    = matrix;
-    MPI_Comm comm = matrix.get_mpi_communicator();
-    KSP      ksp;
-    PC       pc;
-    Mat      factor;
-    PetscInt negative = 0, zero = 0, positive = 0;
-    check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(symmetric)");
-    check(KSPCreate(comm, &ksp), "KSPCreate");
-    check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
-    check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-    check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check(PCSetType(pc, PCCHOLESKY), "PCSetType(cholesky)");
-    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
-    check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
-    check(PCFactorGetMatrix(pc, &factor), "PCFactorGetMatrix");
-    check(MatMumpsSetIcntl(factor, 13, 1), "MatMumpsSetIcntl(13)"); // inertia over all ranks
-    check(MatMumpsSetIcntl(factor, 24, 1), "MatMumpsSetIcntl(24)"); // null pivots, which PETSc needs for the inertia
-    check(KSPSetUp(ksp), "KSPSetUp (LDL^T factorisation)");
-    check(MatGetInertia(factor, &negative, &zero, &positive), "MatGetInertia");
-    KSPDestroy(&ksp);
-    return negative;
+    DirectFactorization factorization;
+    factorization.factor(matrix, true);
+    return factorization.negative_eigenvalues();
   }
 } // namespace compliant

@@ -1,0 +1,75 @@
+#include "linear_algebra/direct_factorization.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace compliant
+{
+  namespace
+  {
+    void check(PetscErrorCode ierr, const char *what)
+    {
+      if (ierr != 0)
+        throw std::runtime_error(std::string("PETSc error in ") + what + " (code " + std::to_string(ierr) + ")");
+    }
+  } // namespace
+
+  DirectFactorization::~DirectFactorization()
+  {
+    if (ksp != nullptr)
+      KSPDestroy(&ksp);
+  }
+
+  void DirectFactorization::factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, const bool symmetric_matrix)
+  {
+    if (ksp != nullptr)
+      KSPDestroy(&ksp);
+    symmetric = symmetric_matrix;
+    Mat A     = matrix;
+    PC  pc;
+    Mat factor;
+    if (symmetric)
+      check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(symmetric)");
+    check(KSPCreate(matrix.get_mpi_communicator(), &ksp), "KSPCreate");
+    check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+    check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+    check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU), "PCSetType");
+    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
+    if (symmetric)
+      {
+        check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+        check(PCFactorGetMatrix(pc, &factor), "PCFactorGetMatrix");
+        check(MatMumpsSetIcntl(factor, 13, 1), "MatMumpsSetIcntl(13)"); // inertia over all ranks
+        check(MatMumpsSetIcntl(factor, 24, 1), "MatMumpsSetIcntl(24)"); // null pivots, which the inertia needs
+      }
+    check(KSPSetUp(ksp), "KSPSetUp (factorization)");
+    PCFailedReason reason;
+    check(PCGetFailedReason(pc, &reason), "PCGetFailedReason");
+    if (reason != PC_NOERROR)
+      throw std::runtime_error("the factorization failed (PETSc reason " + std::to_string(reason) +
+                               "): the tangent is singular");
+  }
+
+  void DirectFactorization::solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const
+  {
+    check(KSPSolve(ksp, b, x), "KSPSolve");
+    KSPConvergedReason reason;
+    KSPGetConvergedReason(ksp, &reason);
+    if (reason < 0)
+      throw std::runtime_error("the direct solve failed (PETSc reason " + std::to_string(reason) + ")");
+  }
+
+  unsigned int DirectFactorization::negative_eigenvalues() const
+  {
+    if (!symmetric)
+      throw std::logic_error("the inertia needs a symmetric (LDL^T) factorization");
+    PC       pc;
+    Mat      factor;
+    PetscInt negative = 0, zero = 0, positive = 0;
+    check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check(PCFactorGetMatrix(pc, &factor), "PCFactorGetMatrix");
+    check(MatGetInertia(factor, &negative, &zero, &positive), "MatGetInertia");
+    return negative;
+  }
+} // namespace compliant

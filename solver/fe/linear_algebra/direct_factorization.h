@@ -1,0 +1,33 @@
+// A sparse direct factorization (MUMPS through PETSc) kept for several right-hand sides: arc-length
+// continuation solves the tangent for the residual and for the load pattern with one factor. The
+// LDL^T factor of a symmetric matrix also gives its inertia (Sylvester's law), the count of
+// negative eigenvalues that tells a stable equilibrium from an unstable one.
+#pragma once
+
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include <petscksp.h>
+
+namespace compliant
+{
+  class DirectFactorization
+  {
+  public:
+    DirectFactorization() = default;
+    DirectFactorization(const DirectFactorization &) = delete;
+    DirectFactorization &operator=(const DirectFactorization &) = delete;
+    ~DirectFactorization();
+
+    // Factors the matrix: LDL^T if symmetric (the inertia is then known), LU otherwise. The
+    // matrix must outlive the solves. Throws std::runtime_error if PETSc fails.
+    void factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, bool symmetric);
+    void solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const;
+    // Negative eigenvalues of the factored matrix; only for a symmetric one.
+    unsigned int negative_eigenvalues() const;
+
+  private:
+    KSP  ksp       = nullptr;
+    bool symmetric = false;
+  };
+} // namespace compliant
