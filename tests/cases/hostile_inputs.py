@@ -219,6 +219,10 @@ plain_case = scratch_file("plain.prm", "set Model = plane stress\nsubsection Geo
 solver_case("mesh without physical groups", [plain_case], ["plain.geo", "physical"])
 bad_geo = scratch_file("broken.geo", "Point(1) = {0, 0, 0;\nLine(1) = {1, 7};\n")
 solver_case("a .geo gmsh cannot read", [plain_case, S, "Geometry/Mesh file=" + bad_geo], ["broken.geo"])
+# Arc-length continuation follows loads: a displacement drive is refused before anything is written.
+solver_case("arc length on a displacement drive",
+            [os.path.join(root, "cases", "verification", "cosine_beam_displacement.prm"), S,
+             "Finite strain/Path=arc length"], ["cosine_beam_displacement.prm", "Path = arc length", "displacement"])
 solver_case("no supports (singular)", [cantilever_3d, S, "Boundary conditions/Clamped="], ["Boundary conditions", "constrained"])
 solver_case("unwritable output directory", [hinge, S, "Output/Directory=/proc/compliant"], ["Output/Directory"])
 solver_case("one cell on more ranks than cells", [cantilever_3d, S, "Geometry/Parameters/nx=1",

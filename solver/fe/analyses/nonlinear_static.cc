@@ -182,6 +182,8 @@ namespace compliant
                                         "a static solve needs the rigid-body motion constrained (a "
                                         "Rigid boundary moves with the body, it does not hold it)");
           validate_quantity_requests(problem);
+          if (arc_length)
+            problem.require_load_driven();
         }
       catch (const std::invalid_argument &e)
         {

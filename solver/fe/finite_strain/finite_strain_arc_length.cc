@@ -97,20 +97,23 @@ namespace compliant
   };
 
   template <int dim>
+  void FiniteStrainProblem<dim>::require_load_driven() const
+  {
+    PETScWrappers::MPI::Vector zero(locally_owned_dofs, locally_relevant_dofs, communicator);
+    const bool driven = make_constraints(1, false, zero).has_inhomogeneities();
+    if (Utilities::MPI::max(driven ? 1 : 0, communicator) > 0)
+      throw std::invalid_argument(
+        "Finite strain/Path = arc length follows loads (forces, moments, pressures), but Boundary "
+        "conditions prescribe a nonzero displacement or rotation, which drives the path itself: "
+        "use Path = load steps for a displacement drive, or load the structure instead");
+  }
+
+  template <int dim>
   ArcLengthResult FiniteStrainProblem<dim>::follow_arc_length(
     const ArcLengthSettings &arc_settings, const std::function<void(const ArcLengthStep &)> &on_step,
     const std::function<void(double, const std::string &, double)> &on_cutback)
   {
-    // Arc-length follows loads; a prescribed displacement or rotation drives the path itself.
-    {
-      PETScWrappers::MPI::Vector zero(locally_owned_dofs, locally_relevant_dofs, communicator);
-      const bool driven = make_constraints(1, false, zero).has_inhomogeneities();
-      if (Utilities::MPI::max(driven ? 1 : 0, communicator) > 0)
-        throw std::invalid_argument(
-          "Finite strain/Path = arc length follows loads (forces, moments, pressures), but Boundary "
-          "conditions prescribe a nonzero displacement or rotation, which drives the path itself: "
-          "use Path = load steps for a displacement drive, or load the structure instead");
-    }
+    require_load_driven();
     FiniteStrainContinuationSystem<dim> system(*this);
     PETScWrappers::MPI::Vector          u(locally_owned_dofs, communicator);
     u             = solution;
@@ -125,6 +128,8 @@ namespace compliant
       on_cutback);
   }
 
+  template void FiniteStrainProblem<2>::require_load_driven() const;
+  template void FiniteStrainProblem<3>::require_load_driven() const;
   template ArcLengthResult FiniteStrainProblem<2>::follow_arc_length(
     const ArcLengthSettings &, const std::function<void(const ArcLengthStep &)> &,
     const std::function<void(double, const std::string &, double)> &);

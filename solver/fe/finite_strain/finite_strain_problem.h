@@ -75,6 +75,8 @@ namespace compliant
     // Arc-length continuation from the current state to load factor 1 (loads only, no prescribed
     // motion: std::invalid_argument otherwise). on_step sees each converged step with the problem
     // at its state; the state stays at the last one.
+    // Throws std::invalid_argument (collectively) if a boundary condition prescribes motion.
+    void            require_load_driven() const;
     ArcLengthResult follow_arc_length(const ArcLengthSettings &settings,
                                       const std::function<void(const ArcLengthStep &)> &on_step,
                                       const std::function<void(double, const std::string &, double)> &on_cutback);

@@ -164,6 +164,58 @@ namespace compliant
         {}
       return false;
     }
+    // Newton on the sphere of radius step about (u, lambda), from the predictor dl * tangent: trial
+    // and increment end at the converged state, dl at its load-factor increment. Throws StepFailure
+    // when it does not converge (or the sphere misses the path), RunInterrupted when asked to stop.
+    template <typename VectorType, typename Inner>
+    NewtonReport correct(ContinuationSystem<VectorType> &system, const VectorType &u, const double lambda,
+                         const double step, double &dl, const VectorType &tangent, VectorType &trial,
+                         VectorType &increment, VectorType &correction, VectorType &load_correction,
+                         const Inner &inner, const ArcLengthSettings &settings)
+    {
+      NewtonReport report;
+      trial = u;
+      system.add_correction(trial, dl, tangent);
+      for (unsigned int it = 0; it <= settings.max_iterations; ++it)
+        {
+          if (system.stop_requested())
+            throw RunInterrupted();
+          increment = trial;
+          system.add(increment, -1, u);
+          const auto linearization = system.linearize(trial, lambda + dl);
+          report.residual          = linearization.residual;
+          report.residual_scale    = std::max(linearization.scale, 1e-300);
+          if (!std::isfinite(linearization.residual))
+            throw StepFailure("the residual is not finite");
+          if (it > 0 && linearization.residual <= settings.residual_tolerance * report.residual_scale)
+            {
+              report.iterations = it;
+              return report;
+            }
+          if (it == settings.max_iterations)
+            break;
+          system.solve(correction, load_correction);
+          // The new increment (c + d t, dl + d), c = increment + correction, on the sphere of
+          // radius step: the root that keeps the increment's direction.
+          const double along_c = inner(increment, dl, increment, dl) + inner(increment, 0, correction, 0);
+          const double along_t = inner(increment, dl, load_correction, 1);
+          const double a       = inner(load_correction, 1, load_correction, 1);
+          const double b       = 2 * (along_t + inner(correction, 0, load_correction, 0));
+          const double c = inner(increment, dl, increment, dl) + 2 * inner(increment, 0, correction, 0) +
+                           inner(correction, 0, correction, 0) - step * step;
+          const double discriminant = b * b - 4 * a * c;
+          if (discriminant < 0)
+            throw StepFailure("the arc-length constraint has no real root (the path turns sharply within the step)");
+          const double root = std::sqrt(discriminant);
+          const double d1 = (-b + root) / (2 * a), d2 = (-b - root) / (2 * a);
+          const double d  = along_c + d1 * along_t >= along_c + d2 * along_t ? d1 : d2;
+          system.add(correction, d, load_correction);
+          system.add_correction(trial, 1, correction);
+          dl += d;
+        }
+      throw StepFailure("no convergence in " + std::to_string(settings.max_iterations) + " iterations (residual " +
+                        std::to_string(report.residual) + ")");
+    }
   } // namespace arc_length_detail
 
   // Follows the path from the converged state (u, lambda), which is updated step by step. on_step
@@ -217,51 +269,8 @@ namespace compliant
         NewtonReport report;
         try
           {
-            bool converged = false;
-            trial          = u;
-            system.add_correction(trial, dl, tangent);
-            for (unsigned int it = 0; it <= settings.max_iterations; ++it)
-              {
-                if (system.stop_requested())
-                  throw RunInterrupted();
-                increment = trial;
-                system.add(increment, -1, u);
-                const auto linearization = system.linearize(trial, lambda + dl);
-                report.residual          = linearization.residual;
-                report.residual_scale    = std::max(linearization.scale, 1e-300);
-                if (!std::isfinite(linearization.residual))
-                  throw StepFailure("the residual is not finite");
-                if (it > 0 && linearization.residual <= settings.residual_tolerance * report.residual_scale)
-                  {
-                    converged         = true;
-                    report.iterations = it;
-                    break;
-                  }
-                if (it == settings.max_iterations)
-                  break;
-                system.solve(correction, load_correction);
-                // The new increment (c + d t, dl + d), c = increment + correction, on the sphere
-                // of radius step: the root that keeps the increment's direction.
-                const double along_c = inner(increment, dl, increment, dl) + inner(increment, 0, correction, 0);
-                const double along_t = inner(increment, dl, load_correction, 1);
-                const double a       = inner(load_correction, 1, load_correction, 1);
-                const double b       = 2 * (along_t + inner(correction, 0, load_correction, 0));
-                const double c       = inner(increment, dl, increment, dl) + 2 * inner(increment, 0, correction, 0) +
-                                 inner(correction, 0, correction, 0) - step * step;
-                const double discriminant = b * b - 4 * a * c;
-                if (discriminant < 0)
-                  throw StepFailure("the arc-length constraint has no real root (the path turns sharply "
-                                    "within the step)");
-                const double root = std::sqrt(discriminant);
-                const double d1 = (-b + root) / (2 * a), d2 = (-b - root) / (2 * a);
-                const double d  = along_c + d1 * along_t >= along_c + d2 * along_t ? d1 : d2;
-                system.add(correction, d, load_correction);
-                system.add_correction(trial, 1, correction);
-                dl += d;
-              }
-            if (!converged)
-              throw StepFailure("no convergence in " + std::to_string(settings.max_iterations) +
-                                " iterations (residual " + std::to_string(report.residual) + ")");
+            report = arc_length_detail::correct(system, u, lambda, step, dl, tangent, trial, increment, correction,
+                                                load_correction, inner, settings);
           }
         catch (const RunInterrupted &)
           {
