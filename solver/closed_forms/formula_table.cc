@@ -1,5 +1,7 @@
 #include "formula_table.h"
 
+#include "formula_helpers.h"
+
 #include "beams.h"
 #include "cylinders.h"
 #include "elastica.h"
@@ -19,151 +21,6 @@ namespace closed_forms
   {
     namespace
     {
-      // Validity limits (project choices, each explained where it is used).
-      constexpr double min_beam_slenderness = 10.0;       // L/h for shear-free beam theory
-      constexpr double min_timoshenko_slenderness = 2.0;  // L/h: clamp end zone ~ h dominates below
-      constexpr double max_linear_deflection = 0.1;       // v/L: elastica differs by > ~1 % above
-      constexpr double max_pivot_length_ratio = 0.1;      // l/L of the small-length flexural pivot
-      constexpr double min_saint_venant_length = 10.0;    // L/a: warping restraint < 5 % beyond
-      constexpr double max_bending_strain = 0.01;         // linear moment-curvature law
-
-      using Args = std::map<std::string, double>;
-      constexpr double none = std::numeric_limits<double>::quiet_NaN();
-
-      Argument
-      positive(const std::string &name, const std::string &description)
-      {
-        return {name, description, true, none, true};
-      }
-
-      Argument
-      signed_value(const std::string &name, const std::string &description)
-      {
-        return {name, description, true, none, false};
-      }
-
-      Argument
-      optional_positive(const std::string &name, const std::string &description,
-                        const double default_value)
-      {
-        return {name, description, false, default_value, true};
-      }
-
-      Argument load() { return signed_value("P", "transverse tip load (force; sign gives the direction)"); }
-      Argument length_L() { return positive("L", "beam length"); }
-      Argument modulus_E() { return positive("E", "Young's modulus"); }
-      Argument poisson_nu() { return signed_value("nu", "Poisson's ratio, -1 < nu < 0.5"); }
-      Argument width_b() { return positive("b", "section width, out of the bending plane"); }
-      Argument depth_h() { return positive("h", "section depth in the bending direction"); }
-      Argument kappa_arg() { return optional_positive("kappa", "shear correction factor",
-                                                   rectangle_shear_coefficient); }
-      Argument flexure_l() { return positive("l", "flexure length"); }
-      Argument gamma_arg() { return optional_positive("gamma", "PRBM characteristic radius factor",
-                                                   prbm_characteristic_radius_factor); }
-      Argument K_theta_arg() { return optional_positive("K_theta", "PRBM stiffness coefficient",
-                                                     prbm_stiffness_coefficient); }
-      Argument angle_Theta() { return signed_value("Theta", "pseudo-rigid-body angle (rad)"); }
-      Argument side_a() { return positive("a", "one side of the rectangle (sorted internally)"); }
-      Argument side_b() { return positive("b", "other side of the rectangle (sorted internally)"); }
-      Argument bar_L() { return positive("L", "bar length"); }
-
-      std::string
-      number(const double value)
-      {
-        std::ostringstream out;
-        out.precision(4);
-        out << value;
-        return out.str();
-      }
-
-      void
-      warn_if(Result &result, const bool condition, const std::string &message)
-      {
-        if (condition)
-          result.warnings.push_back(message);
-      }
-
-      void
-      check_beam_slenderness(Result &result, const double L, const double h)
-      {
-        warn_if(result, L / h < min_beam_slenderness,
-                "L/h = " + number(L / h) +
-                  " < 10: shear deformation is not negligible (use the Timoshenko formula)");
-      }
-
-      void
-      check_timoshenko_slenderness(Result &result, const double L, const double h)
-      {
-        warn_if(result, L / h < min_timoshenko_slenderness,
-                "L/h = " + number(L / h) +
-                  " < 2: the clamped end zone (about one depth long) is not a beam; 2D/3D effects dominate");
-      }
-
-      void
-      check_linear_deflection(Result &result, const double deflection, const double L)
-      {
-        warn_if(result, std::abs(deflection) / L > max_linear_deflection,
-                "|v|/L = " + number(std::abs(deflection) / L) +
-                  " > 0.1: geometric nonlinearity matters (error > ~1 %); use elastica_tip_force_*");
-      }
-
-      // A bound on a linear cantilever formula's error against plane-stress elasticity of an
-      // end-loaded cantilever (model ladder, rung (a)). Three parts: the geometric nonlinearity
-      // (the elastica's tip deflection at alpha = P L^2 / E I against the linear alpha / 3); the
-      // shear term, shear_coefficient (h/L)^2, the formula's departure from Timoshenko and
-      // Goodier's elasticity solution; and (h/L)^2 for a root restrained otherwise than theirs
-      // (fully clamped: measured 0.6-0.9 (h/L)^2 at L/h = 10-40, cases/verification/cantilever_2d.prm).
-      void
-      bound_cantilever_deflection(Result &result, const double P, const double L, const double E,
-                                  const double b, const double h, const double shear_coefficient,
-                                  const std::string &shear_text)
-      {
-        const double alpha = P * L * L / (E * second_moment_of_area(b, h));
-        const double geometric =
-          alpha == 0 ? 0 : std::abs((alpha / 3) / tip_load_elastica(alpha).deflection - 1);
-        const double slenderness = (h / L) * (h / L);
-        result.error_bound = geometric + shear_coefficient * slenderness + slenderness;
-        result.error_bound_basis = "geometric nonlinearity (elastica) " + number(geometric) + ", " +
-                                   shear_text + " " + number(shear_coefficient * slenderness) +
-                                   ", root restraint (h/L)^2 = " + number(slenderness) +
-                                   "; assumes the case's load and clamp are the formula's";
-        result.bound_models = {"plane stress"};
-      }
-
-      void
-      check_prbm_angle(Result &result, const double Theta)
-      {
-        warn_if(result, std::abs(Theta) > prbm_max_angle,
-                "|Theta| = " + number(std::abs(Theta) * 180.0 / M_PI) +
-                  " deg > 64 deg: outside the range of Howell's PRBM fit");
-      }
-
-      void
-      check_bending_strain(Result &result, const double curvature_times_L, const double L,
-                           const double h)
-      {
-        const double strain = std::abs(curvature_times_L) * h / (2.0 * L);
-        warn_if(result, strain > max_bending_strain,
-                "peak bending strain " + number(strain) +
-                  " > 1 %: the linear moment-curvature law of the elastica is doubtful");
-      }
-
-      unsigned int
-      mode_number(const double n)
-      {
-        if (!(n >= 1.0 && n <= 1e6 && n == std::floor(n)))
-          throw std::invalid_argument(
-            "closed_forms: argument 'n' (mode number) must be an integer >= 1, got " +
-            format_number(n));
-        return static_cast<unsigned int>(n);
-      }
-
-      double
-      flexural_rigidity(const Args &p)
-      {
-        return p.at("E") * second_moment_of_area(p.at("b"), p.at("h"));
-      }
-
       // ---------------------------------------------------------------- beams
       void
       add_beam_formulas(std::vector<Formula> &table)
@@ -222,47 +79,6 @@ namespace closed_forms
              return r;
            }});
 
-        const Argument ends = positive("K", "effective-length factor of the ends: 2 fixed-free, 1 pinned-pinned, "
-                                            "0.6992 fixed-pinned, 0.5 fixed-fixed");
-        table.push_back(
-          {"euler_column_load",
-           "buckling load of a column, pi^2 E I / (K L)^2, h the depth in the buckling direction (force)",
-           "Timoshenko and Gere, Theory of Elastic Stability, sec. 2.1-2.3",
-           {length_L(), modulus_E(), width_b(), depth_h(), ends},
-           [](const Args &p) {
-             Result r{euler_column_load(p.at("L"), p.at("E"), p.at("b"), p.at("h"), p.at("K")), {}};
-             check_beam_slenderness(r, p.at("K") * p.at("L"), p.at("h"));
-             return r;
-           }});
-        table.push_back(
-          {"engesser_column_load",
-           "buckling load of a column with shear, P_E / (1 + P_E / (kappa G A)) (force)",
-           "Timoshenko and Gere, Theory of Elastic Stability, sec. 2.18 (Engesser)",
-           {length_L(), modulus_E(), poisson_nu(), width_b(), depth_h(), ends, kappa_arg()},
-           [](const Args &p) {
-             Result r{engesser_column_load(p.at("L"), p.at("E"), p.at("nu"), p.at("b"), p.at("h"), p.at("K"),
-                                           p.at("kappa")),
-                      {}};
-             check_timoshenko_slenderness(r, p.at("K") * p.at("L"), p.at("h"));
-             return r;
-           }});
-
-        table.push_back(
-          {"beam_column_end_moment_stiffness",
-           "end-moment stiffness M/theta of a cantilever under an axial end force P (P > 0 "
-           "compressive, keeping its direction): (EI/L) kL/tan kL, in tension kL/tanh kL (moment/rad)",
-           "Timoshenko and Gere, Theory of Elastic Stability, sec. 1.5",
-           {length_L(), modulus_E(), width_b(), depth_h(),
-            signed_value("P", "axial end force, positive in compression")},
-           [](const Args &p) {
-             Result r{beam_column_end_moment_stiffness(p.at("L"), p.at("E"), p.at("b"), p.at("h"), p.at("P")), {}};
-             check_beam_slenderness(r, p.at("L"), p.at("h"));
-             const double critical = euler_column_load(p.at("L"), p.at("E"), p.at("b"), p.at("h"), 2.0);
-             warn_if(r, p.at("P") >= critical,
-                     "P = " + number(p.at("P") / critical) + " P_cr: at or beyond the buckling load the "
-                     "straight cantilever is unstable (stiffness <= 0)");
-             return r;
-           }});
         table.push_back(
           {"euler_bernoulli_guided_stiffness",
            "transverse stiffness of a fixed-guided beam, 12 E I / L^3 (force/length)",
@@ -598,6 +414,7 @@ namespace closed_forms
       add_torsion_formulas(table);
       add_elastica_formulas(table);
       add_cylinder_formulas(table);
+      add_stability_formulas(table);
       return table;
     }
   } // namespace internal

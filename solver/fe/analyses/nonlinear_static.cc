@@ -3,6 +3,7 @@
 #include "analyses/interruption.h"
 
 #include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
 
 #include "finite_strain/finite_strain_problem.h"
 #include "nonlinear/load_stepping.h"
@@ -220,6 +221,12 @@ namespace compliant
       problem.stop_requested = [&]() { return interruption.requested(comm); };
 
       Quantities quantities;
+      // Derived quantities of the path's critical points (limit_point_1, ...) exist only at the end.
+      std::string per_step_derived, path_derived;
+      for (const auto &entry : dealii::Utilities::split_string_list(p.derived, ';'))
+        (entry.find("limit_point_") == std::string::npos && entry.find("bifurcation") == std::string::npos ?
+           per_step_derived :
+           path_derived) += entry + ";";
       // One curve row per converged step; arc-length rows add the path length and stability.
       const auto record_step = [&](const unsigned int number, const double load_factor, const NewtonReport &report,
                                    const std::vector<std::pair<std::string, double>> &path_columns) {
@@ -227,7 +234,7 @@ namespace compliant
         // Derived quantities per step too, so curves can hold e.g. a link angle.
         try
           {
-            add_derived_quantities(p.derived, quantities, problem.expression_variables());
+            add_derived_quantities(per_step_derived, quantities, problem.expression_variables());
           }
         catch (const std::invalid_argument &e)
           {
@@ -338,6 +345,15 @@ namespace compliant
       if (result.last_stable_load_factor >= 0)
         summary.quantities["last_stable_load_factor"] = result.last_stable_load_factor;
       add_critical_points(critical_points, summary.quantities);
+      try
+        {
+          add_derived_quantities(path_derived, summary.quantities, problem.expression_variables());
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw InputError("case file '" + p.case_file + "': " + e.what() + " (this run found " +
+                           std::to_string(critical_points.size()) + " limit points and bifurcations)");
+        }
       summary.quantities["time_tangent_assembly"] = problem.tangent_assembly_seconds;
       summary.quantities["time_linear_solves"]    = problem.linear_solve_seconds;
       summary.quantities["linear_solves"]         = problem.total_linear_solves;

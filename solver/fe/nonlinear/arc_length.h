@@ -38,6 +38,8 @@ namespace compliant
     double       step_growth        = 1.5;
     unsigned int max_iterations     = 25;
     double       residual_tolerance = 1e-9;
+    // A correction below this fraction of the state ends the iteration (the residual's round-off floor).
+    double correction_tolerance = 1e-10;
     // The path ends where the load factor first reaches end_load_factor (solved there exactly), or
     // after max_steps steps.
     double       end_load_factor = 1;
@@ -212,6 +214,15 @@ namespace compliant
           system.add(correction, d, load_correction);
           system.add_correction(trial, 1, correction);
           dl += d;
+          // The residual's round-off floor: a correction this small ends the iteration.
+          if (it > 0 && system.dot(correction, correction) <=
+                          std::pow(settings.correction_tolerance, 2) * system.dot(trial, trial))
+            {
+              increment = trial;
+              system.add(increment, -1, u);
+              report.iterations = it + 1;
+              return report;
+            }
         }
       throw StepFailure("no convergence in " + std::to_string(settings.max_iterations) + " iterations (residual " +
                         std::to_string(report.residual) + ")");

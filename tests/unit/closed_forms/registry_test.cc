@@ -49,7 +49,7 @@ namespace
     {"P", 0.1},   {"M", 1.0},      {"T", 1.0},        {"L", 100.0},       {"l", 5.0},
     {"E", 2000.0}, {"nu", 0.35},   {"b", 3.0},        {"h", 1.5},         {"a", 4.0},
     {"rho", 1.2e-9}, {"n", 2.0},   {"kappa", 5.0 / 6.0}, {"gamma", 0.85}, {"K_theta", 2.65},
-    {"Theta", 0.4}, {"link_length", 60.0}, {"r_i", 10.0}, {"r_o", 20.0}, {"r", 15.0}, {"K", 2.0}};
+    {"Theta", 0.4}, {"link_length", 60.0}, {"r_i", 10.0}, {"r_o", 20.0}, {"r", 15.0}, {"K", 2.0}, {"t", 0.1}};
 } // namespace
 
 TEST(Registry, NamesAreUniqueSnakeCaseAndDocumented)
@@ -237,6 +237,25 @@ TEST(Registry, WarningsAppearExactlyOutsideTheValidityRange)
   EXPECT_TRUE(warns_about(roll_up(2.01), "strain"));
   EXPECT_FALSE(warns_about(roll_up(6.28), "2 pi"));
   EXPECT_TRUE(warns_about(roll_up(6.29), "2 pi"));
+}
+
+// Qiu-Lang-Slocum's estimates hold for a shallow beam of large Q = h/t: warnings below Q = 10,
+// a different one where it is not bistable at all (Q <= 2.31), and for h/L > 0.1.
+TEST(Registry, BistableEstimatesWarnOutsideLargeQShallowBeams)
+{
+  const auto top = [](const double L, const double t, const double h) {
+    return evaluate("bistable_switching_force_top", {{"L", L}, {"E", 1000.0}, {"b", 1.0}, {"t", t}, {"h", h}});
+  };
+  EXPECT_TRUE(top(800, 1, 16).warnings.empty());
+  EXPECT_TRUE(warns_about(top(400, 1, 8), "large-Q"));
+  EXPECT_TRUE(warns_about(top(400, 1, 2), "not bistable"));
+  EXPECT_FALSE(warns_about(top(400, 1, 2), "large-Q"));
+  EXPECT_TRUE(warns_about(top(100, 1, 12), "shallow"));
+  // Per beam, in E I h / L^3: 740 forward, 370 back (the paper's coefficients).
+  const double unit = 1000.0 / 12.0 * 16 / (800.0 * 800.0 * 800.0);
+  EXPECT_NEAR(top(800, 1, 16).value / unit, 740.0, 1e-9);
+  EXPECT_NEAR(evaluate("bistable_switching_force_bottom", {{"L", 800.0}, {"E", 1000.0}, {"b", 1.0}, {"t", 1.0}, {"h", 16.0}}).value / unit,
+              370.0, 1e-9);
 }
 
 TEST(Registry, WarningFreeFormulasStayQuiet)

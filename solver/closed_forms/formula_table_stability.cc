@@ -1,0 +1,98 @@
+// Closed forms of stability: columns, flexures under axial load, bistable beams.
+#include "bistable.h"
+#include "formula_helpers.h"
+
+namespace closed_forms
+{
+  namespace internal
+  {
+    namespace
+    {
+      // Measured with the FE (perfect single cosine beam, plane stress, arc length, mode 2 not
+      // taken): F_top / F_bottom against the estimates -14 / -31 % at Q = 4, -4 / -11 % at Q = 8,
+      // -0.6 / -3 % at Q = 16 (h/L = 0.02-0.04): they are the large-Q limits.
+      constexpr double bistable_estimate_q = 10.0;
+      constexpr double bistable_shallow_ratio = 0.1; // h/L: the shallow-beam (modal) model
+
+      void check_bistable(Result &result, const Args &p)
+      {
+        const double Q = p.at("h") / p.at("t");
+        warn_if(result, Q <= bistable_minimum_q,
+                "Q = h/t = " + number(Q) + " <= 2.31: the beam is not bistable with its second mode held");
+        warn_if(result, Q > bistable_minimum_q && Q < bistable_estimate_q,
+                "Q = h/t = " + number(Q) + " < 10: the estimate is the large-Q limit and overestimates (FE: "
+                "+16/+45 % at Q = 4, +4/+12 % at Q = 8 for top/bottom)");
+        warn_if(result, p.at("h") / p.at("L") > bistable_shallow_ratio,
+                "h/L = " + number(p.at("h") / p.at("L")) + " > 0.1: not a shallow beam");
+      }
+    } // namespace
+
+    void add_stability_formulas(std::vector<Formula> &table)
+    {
+      const Argument ends = positive("K", "effective-length factor of the ends: 2 fixed-free, 1 pinned-pinned, "
+                                          "0.6992 fixed-pinned, 0.5 fixed-fixed");
+      table.push_back(
+        {"euler_column_load",
+         "buckling load of a column, pi^2 E I / (K L)^2, h the depth in the buckling direction (force)",
+         "Timoshenko and Gere, Theory of Elastic Stability, sec. 2.1-2.3",
+         {length_L(), modulus_E(), width_b(), depth_h(), ends},
+         [](const Args &p) {
+           Result r{euler_column_load(p.at("L"), p.at("E"), p.at("b"), p.at("h"), p.at("K")), {}};
+           check_beam_slenderness(r, p.at("K") * p.at("L"), p.at("h"));
+           return r;
+         }});
+      table.push_back(
+        {"engesser_column_load",
+         "buckling load of a column with shear, P_E / (1 + P_E / (kappa G A)) (force)",
+         "Timoshenko and Gere, Theory of Elastic Stability, sec. 2.18 (Engesser)",
+         {length_L(), modulus_E(), poisson_nu(), width_b(), depth_h(), ends, kappa_arg()},
+         [](const Args &p) {
+           Result r{engesser_column_load(p.at("L"), p.at("E"), p.at("nu"), p.at("b"), p.at("h"), p.at("K"),
+                                         p.at("kappa")),
+                    {}};
+           check_timoshenko_slenderness(r, p.at("K") * p.at("L"), p.at("h"));
+           return r;
+         }});
+
+      table.push_back(
+        {"beam_column_end_moment_stiffness",
+         "end-moment stiffness M/theta of a cantilever under an axial end force P (P > 0 "
+         "compressive, keeping its direction): (EI/L) kL/tan kL, in tension kL/tanh kL (moment/rad)",
+         "Timoshenko and Gere, Theory of Elastic Stability, sec. 1.5",
+         {length_L(), modulus_E(), width_b(), depth_h(),
+          signed_value("P", "axial end force, positive in compression")},
+         [](const Args &p) {
+           Result r{beam_column_end_moment_stiffness(p.at("L"), p.at("E"), p.at("b"), p.at("h"), p.at("P")), {}};
+           check_beam_slenderness(r, p.at("L"), p.at("h"));
+           const double critical = euler_column_load(p.at("L"), p.at("E"), p.at("b"), p.at("h"), 2.0);
+           warn_if(r, p.at("P") >= critical,
+                   "P = " + number(p.at("P") / critical) + " P_cr: at or beyond the buckling load the "
+                   "straight cantilever is unstable (stiffness <= 0)");
+           return r;
+         }});
+
+      const std::vector<Argument> bistable_args = {
+        positive("L", "span of the beam"), modulus_E(), positive("b", "out-of-plane width"),
+        positive("t", "in-plane thickness"), positive("h", "apex height of the centre line (cosine shape)")};
+      table.push_back({"bistable_switching_force_top",
+                       "force at the centre that snaps a cosine clamped-clamped beam with its second mode "
+                       "held (double beam, tied centre) forward, ~740 E I h / L^3 per beam (force)",
+                       "Qiu, Lang and Slocum, J. MEMS 13:137 (2004)", bistable_args, [](const Args &p) {
+                         Result r{bistable_switching_force_top(p.at("L"), p.at("E"), p.at("b"), p.at("t"), p.at("h")),
+                                  {}};
+                         check_bistable(r, p);
+                         return r;
+                       }});
+      table.push_back({"bistable_switching_force_bottom",
+                       "force at the centre that pulls the same beam back from its second stable position, "
+                       "~370 E I h / L^3 per beam (force)",
+                       "Qiu, Lang and Slocum, J. MEMS 13:137 (2004)", bistable_args, [](const Args &p) {
+                         Result r{bistable_switching_force_bottom(p.at("L"), p.at("E"), p.at("b"), p.at("t"),
+                                                                  p.at("h")),
+                                  {}};
+                         check_bistable(r, p);
+                         return r;
+                       }});
+    }
+  } // namespace internal
+} // namespace closed_forms
