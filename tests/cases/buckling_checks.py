@@ -60,6 +60,31 @@ elif mode == "tension":
     pulled = run_case(case, ["Loads/Total force=right: 1 0"])["quantities"]["buckling_factor_1"]
     print("compressed %.6g, pulled %.6g" % (compressed, pulled))
     check(abs(pulled / compressed + 1) < 1e-8, "reversing the load reverses the factor's sign")
+elif mode == "column_state":
+    # About the finite-strain state at half the critical load: a straight column deforms linearly before
+    # it buckles, so the estimate must agree with Engesser's load and with linear buckling (0.21 % measured).
+    H = 5.0
+    sets = ["Analysis=buckling", "Loads/Total force=", "Loads/Traction=right: -0.2 0"]
+    state = run_case(case, sets + ["Buckling/Reference load factor=256"])["quantities"]
+    compare(state, "buckling_factor_1", column_load(1, H ** 3 / 12, H, 100.0), 0.005, "about the state at 256")
+    linear = run_case(case, sets)["quantities"]["buckling_factor_1"]
+    check(abs(state["buckling_factor_1"] / linear - 1) < 0.005, "linear buckling %.6g, about the state %.6g" %
+          (linear, state["buckling_factor_1"]))
+elif mode == "arch_state":
+    # The shallow arch under load: linear buckling ignores the deformation before the snap and is 60 %
+    # unconservative; about the state at load factor 0.033 the estimate must find the limit point that
+    # arc length follows (0.3 % measured), and be closer to it than about the state at 0.03.
+    arc = run_case(case, ["Finite strain/Path=arc length"])["quantities"]["limit_point_1"]
+    linear = run_case(case, ["Analysis=buckling"])["quantities"]["buckling_factor_1"]
+    near = run_case(case, ["Analysis=buckling", "Buckling/Reference load factor=0.033"])["quantities"]
+    far = run_case(case, ["Analysis=buckling", "Buckling/Reference load factor=0.03"])["quantities"]
+    print("limit point by arc length %.6g; linear buckling %.6g; about 0.03: %.6g; about 0.033: %.6g" %
+          (arc, linear, far["buckling_factor_1"], near["buckling_factor_1"]))
+    check(linear / arc - 1 > 0.5, "linear buckling is unconservative here (%+.0f %%)" % (100 * (linear / arc - 1)))
+    check(abs(near["buckling_factor_1"] / arc - 1) < 0.005, "about the state at 0.033: %+.2f %% from the limit point" %
+          (100 * (near["buckling_factor_1"] / arc - 1)))
+    check(abs(near["buckling_factor_1"] - arc) < abs(far["buckling_factor_1"] - arc),
+          "the estimate improves as the reference state nears the limit point")
 else:
     sys.exit("unknown mode " + mode)
 finish()

@@ -1,4 +1,5 @@
 #include "analyses/buckling.h"
+#include "analyses/buckling_parts.h"
 
 #include <deal.II/base/timer.h>
 
@@ -17,13 +18,6 @@ namespace compliant
 {
   namespace
   {
-    struct BucklingSettings
-    {
-      unsigned int n_modes;
-      double       tolerance;
-      unsigned int max_iterations;
-    };
-
     void declare(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Buckling");
@@ -33,9 +27,66 @@ namespace compliant
                         "Relative convergence tolerance of the eigenpairs (SLEPc).");
       prm.declare_entry("Maximum iterations", "1000", dealii::Patterns::Integer(1),
                         "Krylov-Schur restarts before giving up.");
+      prm.declare_entry("Reference load factor", "0", dealii::Patterns::Double(0),
+                        "0: buckling about the linear static state (the stress of the case's loads, "
+                        "linear). > 0: about the finite-strain state at this load factor (the path "
+                        "followed in load steps as in Analysis = nonlinear static, subsection Finite "
+                        "strain): (K_T + mu dK_T/dlambda) phi = 0 with the tangent's change by a "
+                        "step back from that state; the buckling factors are the reference plus mu. "
+                        "Takes the deformation before buckling into account (shallow arches, "
+                        "flexures under a rotation drive).");
       prm.leave_subsection();
     }
 
+  } // namespace
+
+  std::vector<dealii::PETScWrappers::MPI::Vector> add_buckling_factors(const EigenResult &result,
+                                                                       const double       reference,
+                                                                       Quantities        &q,
+                                                                       const bool         root,
+                                                                       const double       eigen_seconds)
+  {
+    // Nearest the reference state first, whatever the sign.
+    std::vector<unsigned int> order(result.eigenvalues.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+      return std::abs(result.eigenvalues[a]) < std::abs(result.eigenvalues[b]);
+    });
+    double worst_error = 0;
+    bool   negative    = false;
+    std::vector<dealii::PETScWrappers::MPI::Vector> modes;
+    for (unsigned int k = 0; k < order.size(); ++k)
+      {
+        const double factor = reference + result.eigenvalues[order[k]];
+        q["buckling_factor_" + std::to_string(k + 1)] = factor;
+        negative    = negative || factor < 0;
+        worst_error = std::max(worst_error, result.backward_errors[order[k]]);
+        modes.push_back(result.eigenvectors[order[k]]);
+      }
+    q["eigen_backward_error_max"] = worst_error;
+    q["eigensolver_iterations"]   = result.iterations;
+    q["time_eigensolve"]          = eigen_seconds;
+    if (root)
+      {
+        std::cout << "Buckling: " << result.n_converged << " pairs converged, " << result.iterations << " restarts, "
+                  << eigen_seconds << " s\n  mode  load factor\n";
+        for (unsigned int k = 0; k < order.size(); ++k)
+          std::cout << "  " << std::setw(4) << k + 1 << "  " << std::setprecision(10)
+                    << q["buckling_factor_" + std::to_string(k + 1)] << "\n";
+        if (negative)
+          std::cout << "  A negative factor -f: the part buckles under the loads reversed and scaled by f "
+                       "(a stress state with both tension and compression can buckle either way).\n";
+        if (reference > 0 && std::any_of(result.eigenvalues.begin(), result.eigenvalues.end(), [](double e) { return e < 0; }))
+          std::cout << "  A factor below the reference load factor " << reference
+                    << " belongs to a mode that stiffens as the load grows: extrapolated back, not a critical "
+                       "point ahead.\n";
+        std::cout << std::flush;
+      }
+    return modes;
+  }
+
+  namespace
+  {
     template <int dim>
     int run(const RunContext &context)
     {
@@ -45,7 +96,10 @@ namespace compliant
       dealii::Timer timer;
       const BucklingSettings settings{static_cast<unsigned int>(context.prm.get_integer({"Buckling"}, "Number of modes")),
                                       context.prm.get_double({"Buckling"}, "Tolerance"),
-                                      static_cast<unsigned int>(context.prm.get_integer({"Buckling"}, "Maximum iterations"))};
+                                      static_cast<unsigned int>(context.prm.get_integer({"Buckling"}, "Maximum iterations")),
+                                      context.prm.get_double({"Buckling"}, "Reference load factor")};
+      if (settings.reference_load_factor > 0)
+        return run_buckling_about_finite_strain_state<dim>(context, settings);
 
       // The reference state: the linear static solution under the case's loads, matrix kept.
       auto model = solve_linear_static_model<dim>(context, p, true);
@@ -77,47 +131,14 @@ namespace compliant
       EigenResult   result = solve_eigenproblem(problem.system_matrix, minus_geometric, problem.locally_owned_dofs, eigen);
       const double  eigen_seconds = eigen_timer.wall_time();
 
-      // Nearest zero first, whatever the sign.
-      std::vector<unsigned int> order(result.eigenvalues.size());
-      std::iota(order.begin(), order.end(), 0u);
-      std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
-        return std::abs(result.eigenvalues[a]) < std::abs(result.eigenvalues[b]);
-      });
-
       RunSummary summary = start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
       summary.settings.insert({"eigensolver", "SLEPc Krylov-Schur, shift-and-invert about 0, MUMPS"});
       summary.settings.insert({"reference_state", "linear static under the case's loads (load factor 1)"});
       summary.settings.insert({"solver", problem.solver_method});
       summary.quantities = model.quantities;
-      auto  &q           = summary.quantities;
-      double worst_error = 0;
-      std::vector<dealii::PETScWrappers::MPI::Vector> modes;
-      bool                                            negative = false;
-      for (unsigned int k = 0; k < order.size(); ++k)
-        {
-          const double factor = result.eigenvalues[order[k]];
-          q["buckling_factor_" + std::to_string(k + 1)] = factor;
-          negative = negative || factor < 0;
-          worst_error = std::max(worst_error, result.backward_errors[order[k]]);
-          modes.push_back(result.eigenvectors[order[k]]);
-        }
-      q["eigen_backward_error_max"] = worst_error;
-      q["eigensolver_iterations"]   = result.iterations;
-      q["time_geometric_stiffness"] = geometric_seconds;
-      q["time_eigensolve"]          = eigen_seconds;
-      q["time_total"]               = timer.wall_time();
-      if (root)
-        {
-          std::cout << "Buckling: " << result.n_converged << " pairs converged, " << result.iterations
-                    << " restarts, " << eigen_seconds << " s\n  mode  load factor\n";
-          for (unsigned int k = 0; k < order.size(); ++k)
-            std::cout << "  " << std::setw(4) << k + 1 << "  " << std::setprecision(10)
-                      << q["buckling_factor_" + std::to_string(k + 1)] << "\n";
-          if (negative)
-            std::cout << "  A negative factor -f: the part buckles under the loads reversed and scaled by f "
-                         "(a stress state with both tension and compression can buckle either way).\n";
-          std::cout << std::flush;
-        }
+      auto modes = add_buckling_factors(result, 0, summary.quantities, root, eigen_seconds);
+      summary.quantities["time_geometric_stiffness"] = geometric_seconds;
+      summary.quantities["time_total"]               = timer.wall_time();
 
       // Mode shapes satisfy the supports held at zero.
       dealii::AffineConstraints<double> homogeneous;

@@ -16,7 +16,7 @@ namespace compliant
   {
     // Largest displacement magnitude at the support points of the owned cells, over all ranks.
     template <int dim>
-    double largest_magnitude(const LinearElasticProblem<dim>   &problem,
+    double largest_magnitude(const Discretization<dim>         &problem,
                              const PETScWrappers::MPI::Vector &ghosted)
     {
       // The displacement element's nodes (a mixed element's pressure has none).
@@ -42,7 +42,7 @@ namespace compliant
   } // namespace
 
   template <int dim>
-  std::string write_mode_shapes(const LinearElasticProblem<dim>               &problem,
+  std::string write_mode_shapes(const Discretization<dim>                     &problem,
                                 const std::vector<PETScWrappers::MPI::Vector> &modes,
                                 const std::string                             &directory)
   {
@@ -73,10 +73,10 @@ namespace compliant
     return write_field_files(data_out, problem, directory);
   }
 
-  template std::string write_mode_shapes<2>(const LinearElasticProblem<2> &,
+  template std::string write_mode_shapes<2>(const Discretization<2> &,
                                             const std::vector<PETScWrappers::MPI::Vector> &,
                                             const std::string &);
-  template std::string write_mode_shapes<3>(const LinearElasticProblem<3> &,
+  template std::string write_mode_shapes<3>(const Discretization<3> &,
                                             const std::vector<PETScWrappers::MPI::Vector> &,
                                             const std::string &);
 } // namespace compliant

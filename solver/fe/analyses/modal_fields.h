@@ -4,7 +4,7 @@
 
 #include <deal.II/lac/petsc_vector.h>
 
-#include "elasticity/linear_elastic_problem.h"
+#include "discretization/discretization.h"
 
 #include <string>
 #include <vector>
@@ -14,7 +14,7 @@ namespace compliant
   // The modes must satisfy the (homogeneous) constraints, i.e. be distributed. Returns the path
   // of the .xdmf file; files appear under their final names only when complete.
   template <int dim>
-  std::string write_mode_shapes(const LinearElasticProblem<dim>                       &problem,
+  std::string write_mode_shapes(const Discretization<dim>                             &problem,
                                 const std::vector<dealii::PETScWrappers::MPI::Vector> &modes,
                                 const std::string                                     &directory);
 } // namespace compliant

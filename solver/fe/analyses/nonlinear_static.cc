@@ -1,10 +1,12 @@
 #include "analyses/nonlinear_static.h"
 
 #include "analyses/interruption.h"
+#include "analyses/response_curve.h"
 
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include "finite_strain/finite_strain_load_path.h"
 #include "finite_strain/finite_strain_problem.h"
 #include "nonlinear/load_stepping.h"
 #include "output/field_output.h"
@@ -71,40 +73,6 @@ namespace compliant
       prm.leave_subsection();
     }
 
-    // The finite-strain problem as the load path sees it.
-    template <int dim>
-    class FiniteStrainLoadPath : public LoadPathProblem
-    {
-    public:
-      FiniteStrainLoadPath(FiniteStrainProblem<dim> &problem, std::function<bool()> interruption)
-        : problem(problem)
-        , interruption(std::move(interruption))
-      {}
-      double       load_factor() const override { return problem.load_factor; }
-      NewtonReport solve_to(const double target) override { return problem.solve_to(target); }
-      void         save_state() override
-      {
-        saved             = problem.solution;
-        saved_load_factor = problem.load_factor;
-      }
-      void   restore_state() override { problem.restore(saved, saved_load_factor); }
-      double change_from_saved_state() const override
-      {
-        dealii::PETScWrappers::MPI::Vector change(problem.locally_owned_dofs, problem.communicator);
-        change = problem.solution;
-        change.add(-1, saved);
-        return change.l2_norm();
-      }
-      unsigned int unstable_modes() override { return problem.unstable_modes(); }
-      bool         stop_requested() override { return interruption(); }
-
-    private:
-      FiniteStrainProblem<dim>          &problem;
-      std::function<bool()>              interruption;
-      dealii::PETScWrappers::MPI::Vector saved;
-      double                             saved_load_factor = 0;
-    };
-
     void report_critical_points(const std::vector<CriticalPoint> &points, const bool root)
     {
       if (!root)
@@ -133,247 +101,259 @@ namespace compliant
           quantities["bifurcations"] = bifurcations;
         }
     }
+
+    // What the stability stop advises depends on how the path is driven.
+    template <int dim>
+    std::string unstable_advice(const BoundaryConditions<dim> &bc)
+    {
+      if (bc.displacements.empty() && bc.rotations.empty())
+        return "Load control cannot follow it: drive the structure by a prescribed displacement to follow it "
+               "past a limit point (or use Finite strain/Path = arc length)";
+      // a displacement drive passes limit points of the load: what stops it is a bifurcation
+      return "The run is driven by prescribed displacements or rotations, so this is a bifurcation (or a "
+             "limit of the drive itself): an imperfection (a geometry parameter) selects one branch to follow";
+    }
+
+    // Derived quantities split into those of every step and those of the path's critical points
+    // (limit_point_1, ...), which exist only at the end.
+    std::pair<std::string, std::string> split_derived(const std::string &derived)
+    {
+      std::string per_step, path;
+      for (const auto &entry : dealii::Utilities::split_string_list(derived, ';'))
+        (entry.find("limit_point_") == std::string::npos && entry.find("bifurcation") == std::string::npos ?
+           per_step :
+           path) += entry + ";";
+      return {per_step, path};
+    }
+
+    void print_step(const unsigned int number, const double load_factor, const NewtonReport &report)
+    {
+      std::cout << "step " << std::setw(3) << number << "  load factor " << std::setw(10) << std::setprecision(6)
+                << load_factor << "  Newton " << std::setw(2) << report.iterations << "  residual "
+                << std::scientific << std::setprecision(2) << report.residual << std::defaultfloat;
+      if (report.line_search_cuts)
+        std::cout << "  line search cuts " << report.line_search_cuts;
+      std::cout << std::endl;
+    }
+
+    struct PathOutcome
+    {
+      LoadPathResult             result;
+      std::vector<CriticalPoint> critical_points;
+    };
+
+    using StepRecorder =
+      std::function<void(unsigned int, double, const NewtonReport &, const std::vector<std::pair<std::string, double>> &)>;
+
+    // Follows the path by load steps or arc length; record runs for every converged step.
+    template <int dim>
+    PathOutcome follow_path(FiniteStrainProblem<dim> &problem, const PathSettings &settings,
+                            const StepRecorder &record, std::function<bool()> interruption, const bool root,
+                            const std::string &case_file)
+    {
+      PathOutcome outcome;
+      if (!settings.arc_length)
+        {
+          FiniteStrainLoadPath<dim> path(problem, std::move(interruption));
+          outcome.result = follow_load_path(
+            path, settings.stepping,
+            [&](const AcceptedStep &accepted) { record(accepted.number, accepted.load_factor, accepted.newton, {}); },
+            [&](const double target, const std::string &why, const double next_step) {
+              if (root)
+                std::cout << "step to load factor " << target << " failed: " << why << "; cutting the step to "
+                          << next_step << std::endl;
+            });
+          return outcome;
+        }
+      ArcLengthResult arc;
+      try
+        {
+          arc = problem.follow_arc_length(
+            settings.continuation,
+            [&](const ArcLengthStep &step) {
+              record(step.number, step.load_factor, step.newton,
+                     {{"arc_length", step.arc_length}, {"unstable_modes", step.unstable_modes}});
+            },
+            [&](const double from, const std::string &why, const double next) {
+              if (root)
+                std::cout << "arc-length step from load factor " << from << " failed: " << why
+                          << "; cutting the step to " << next << std::endl;
+            });
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw InputError("case file '" + case_file + "': " + e.what());
+        }
+      outcome.result.steps             = arc.steps;
+      outcome.result.cutbacks          = arc.cutbacks;
+      outcome.result.newton_iterations = arc.newton_iterations;
+      outcome.result.failure           = arc.failure;
+      outcome.result.interrupted       = arc.interrupted;
+      outcome.critical_points          = arc.critical_points;
+      report_critical_points(outcome.critical_points, root);
+      return outcome;
+    }
+
+    // The run's counts and timings, its critical points and the derived quantities that use them.
+    template <int dim>
+    void add_path_quantities(RunSummary &summary, const FiniteStrainProblem<dim> &problem,
+                             const PathOutcome &outcome, const std::string &path_derived,
+                             const std::string &case_file)
+    {
+      const auto &result = outcome.result;
+      auto       &q      = summary.quantities;
+      q["load_factor"]       = problem.load_factor;
+      q["load_steps"]        = result.steps;
+      q["step_cutbacks"]     = result.cutbacks;
+      q["newton_iterations"] = result.newton_iterations;
+      if (result.last_stable_load_factor >= 0)
+        q["last_stable_load_factor"] = result.last_stable_load_factor;
+      add_critical_points(outcome.critical_points, q);
+      try
+        {
+          add_derived_quantities(path_derived, q, problem.expression_variables());
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw InputError("case file '" + case_file + "': " + e.what() + " (this run found " +
+                           std::to_string(outcome.critical_points.size()) + " limit points and bifurcations)");
+        }
+      q["time_tangent_assembly"] = problem.tangent_assembly_seconds;
+      q["time_linear_solves"]    = problem.linear_solve_seconds;
+      q["linear_solves"]         = problem.total_linear_solves;
+      if (problem.preconditioner_setup_seconds > 0)
+        q["time_preconditioner_setup"] = problem.preconditioner_setup_seconds;
+      if (problem.total_linear_iterations > 0)
+        q["linear_iterations"] = problem.total_linear_iterations;
+    }
   } // namespace
+
+  PathSettings read_path_settings(dealii::ParameterHandler &prm, const CaseParameters &p, const int dim)
+  {
+    PathSettings s;
+    prm.enter_subsection("Finite strain");
+    s.finite_strain.law                   = prm.get("Law");
+    s.finite_strain.mooney_rivlin_ratio   = prm.get_double("Mooney-Rivlin ratio");
+    s.finite_strain.mixed                 = prm.get("Formulation") == "mixed";
+    s.finite_strain.follower_pressure     = prm.get("Follower pressure");
+    s.finite_strain.max_newton_iterations = prm.get_integer("Newton iterations");
+    s.finite_strain.residual_tolerance    = prm.get_double("Residual tolerance");
+    // A moment on a rigid boundary in 3D makes the tangent unsymmetric too (a space-fixed
+    // moment is not conservative under finite rotations).
+    s.stepping.stability_check = prm.get_bool("Stability check") && s.finite_strain.follower_pressure.empty() &&
+                                 !(dim == 3 && !dealii::Utilities::trim(p.rigid).empty());
+    s.stepping.initial_step           = prm.get_double("Initial step");
+    s.stepping.minimum_step           = prm.get_double("Minimum step");
+    s.stepping.maximum_step           = prm.get_double("Maximum step");
+    s.arc_length                      = prm.get("Path") == "arc length";
+    s.continuation.initial_step       = s.stepping.initial_step;
+    s.continuation.minimum_step       = s.stepping.minimum_step;
+    s.continuation.maximum_step       = s.stepping.maximum_step;
+    s.continuation.max_iterations     = s.finite_strain.max_newton_iterations;
+    s.continuation.residual_tolerance = s.finite_strain.residual_tolerance;
+    s.continuation.max_steps          = prm.get_integer("Arc length steps");
+    prm.leave_subsection();
+    return s;
+  }
+
 
   template <int dim>
   int run_nonlinear_static(const RunContext &context, const std::function<void(RunSummary &)> &amend_summary)
   {
-      const auto &p    = context.parameters;
-      MPI_Comm    comm = context.communicator;
-      const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-      auto       &prm  = const_cast<dealii::ParameterHandler &>(context.prm);
+    const auto &p    = context.parameters;
+    MPI_Comm    comm = context.communicator;
+    const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+    PathSettings settings = read_path_settings(const_cast<dealii::ParameterHandler &>(context.prm), p, dim);
 
-      FiniteStrainSettings settings;
-      LoadSteppingSettings stepping;
-      prm.enter_subsection("Finite strain");
-      settings.law                   = prm.get("Law");
-      settings.mooney_rivlin_ratio   = prm.get_double("Mooney-Rivlin ratio");
-      settings.mixed                 = prm.get("Formulation") == "mixed";
-      settings.follower_pressure     = prm.get("Follower pressure");
-      settings.max_newton_iterations = prm.get_integer("Newton iterations");
-      settings.residual_tolerance    = prm.get_double("Residual tolerance");
-      // A moment on a rigid boundary in 3D makes the tangent unsymmetric too (a space-fixed
-      // moment is not conservative under finite rotations).
-      stepping.stability_check = prm.get_bool("Stability check") &&
-                                   settings.follower_pressure.empty() &&
-                                   !(dim == 3 && !dealii::Utilities::trim(p.rigid).empty());
-      stepping.initial_step          = prm.get_double("Initial step");
-      stepping.minimum_step          = prm.get_double("Minimum step");
-      stepping.maximum_step          = prm.get_double("Maximum step");
-      const bool        arc_length = prm.get("Path") == "arc length";
-      ArcLengthSettings continuation;
-      continuation.initial_step       = stepping.initial_step;
-      continuation.minimum_step       = stepping.minimum_step;
-      continuation.maximum_step       = stepping.maximum_step;
-      continuation.max_iterations     = settings.max_newton_iterations;
-      continuation.residual_tolerance = settings.residual_tolerance;
-      continuation.max_steps          = prm.get_integer("Arc length steps");
-      prm.leave_subsection();
+    dealii::Timer            timer;
+    FiniteStrainProblem<dim> problem(p, settings.finite_strain, context.geometry, comm,
+                                     choose_mesh_partition(context, p, ""));
+    try
+      {
+        parse_checks(p.checks);
+        problem.setup();
+        const auto &bc = problem.boundary_conditions;
+        if (bc.clamped.empty() && bc.displacements.empty() && bc.rotations.empty())
+          throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
+                                      "a static solve needs the rigid-body motion constrained (a "
+                                      "Rigid boundary moves with the body, it does not hold it)");
+        validate_quantity_requests(problem);
+        if (settings.arc_length)
+          problem.require_load_driven();
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("case file '" + p.case_file + "': " + e.what());
+      }
+    settings.stepping.unstable_advice = unstable_advice(problem.boundary_conditions);
+    const auto &law = settings.finite_strain;
+    if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
+                                      problem.dof_handler.n_dofs(),
+                                      ", " + law.law + (law.mixed ? ", mixed u-p" : ", displacement") +
+                                        (problem.mesh_partition.partition == MeshPartition::distributed ?
+                                           ", mesh distributed" :
+                                           "")))
+      return 0;
 
-      dealii::Timer            timer;
-      FiniteStrainProblem<dim> problem(p, settings, context.geometry, comm,
-                                       choose_mesh_partition(context, p, ""));
+    // The response curve is written step by step: a run that stops keeps its converged steps.
+    if (root)
+      std::filesystem::create_directories(p.output_directory);
+    ResponseCurve     curve(p.output_directory + "/curve.csv", root);
+    InterruptionGuard interruption;
+    problem.stop_requested = [&]() { return interruption.requested(comm); };
+
+    Quantities quantities;
+    const auto [per_step_derived, path_derived] = split_derived(p.derived);
+    const auto record = [&](const unsigned int number, const double load_factor, const NewtonReport &report,
+                            const std::vector<std::pair<std::string, double>> &path_columns) {
+      quantities = compute_quantities(problem);
+      // Derived quantities per step too, so curves can hold e.g. a link angle.
       try
         {
-          parse_checks(p.checks);
-          problem.setup();
-          const auto &bc = problem.boundary_conditions;
-          if (bc.clamped.empty() && bc.displacements.empty() && bc.rotations.empty())
-            throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
-                                        "a static solve needs the rigid-body motion constrained (a "
-                                        "Rigid boundary moves with the body, it does not hold it)");
-          validate_quantity_requests(problem);
-          if (arc_length)
-            problem.require_load_driven();
+          add_derived_quantities(per_step_derived, quantities, problem.expression_variables());
         }
       catch (const std::invalid_argument &e)
         {
           throw InputError("case file '" + p.case_file + "': " + e.what());
         }
-      {
-        const auto &bc = problem.boundary_conditions;
-        if (bc.displacements.empty() && bc.rotations.empty())
-          stepping.unstable_advice = "Load control cannot follow it: drive the structure by a prescribed "
-                                     "displacement to follow it past a limit point";
-        else // a displacement drive passes limit points of the load: what stops it is a bifurcation
-          stepping.unstable_advice = "The run is driven by prescribed displacements or rotations, so this "
-                                     "is a bifurcation (or a limit of the drive itself): an imperfection "
-                                     "(a geometry parameter) selects one branch to follow";
-      }
-      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
-                                        problem.dof_handler.n_dofs(), ", " + settings.law + (settings.mixed ? ", mixed u-p" : ", displacement") +
-                                          (problem.mesh_partition.partition == MeshPartition::distributed ? ", mesh distributed" : "")))
-        return 0;
-
-      // The response curve is written step by step: a run that stops keeps its converged steps.
       if (root)
-        std::filesystem::create_directories(p.output_directory);
-      // Rewritten whole under a temporary name and renamed after every step, so that a run
-      // stopped at any moment leaves a complete curve of its converged steps, never a torn line.
-      const std::string curve_file = p.output_directory + "/curve.csv";
-      std::string       curve;
-      std::vector<std::string> columns;
-      const auto        write_curve = [&]() {
-        std::ofstream(curve_file + ".tmp") << curve;
-        std::filesystem::rename(curve_file + ".tmp", curve_file);
-      };
-      InterruptionGuard interruption;
-      problem.stop_requested = [&]() { return interruption.requested(comm); };
+        print_step(number, load_factor, report);
+      curve.add(number, load_factor, report.iterations, path_columns, quantities);
+    };
+    const PathOutcome outcome =
+      follow_path(problem, settings, record, [&]() { return interruption.requested(comm); }, root, p.case_file);
+    std::string failure = outcome.result.failure;
+    if (outcome.result.interrupted)
+      {
+        std::ostringstream message;
+        message << "interrupted by " << interruption.signal_name(comm) << " at load factor " << problem.load_factor
+                << " (last converged step, " << outcome.result.steps << " steps)";
+        failure = message.str();
+      }
+    curve.finish();
 
-      Quantities quantities;
-      // Derived quantities of the path's critical points (limit_point_1, ...) exist only at the end.
-      std::string per_step_derived, path_derived;
-      for (const auto &entry : dealii::Utilities::split_string_list(p.derived, ';'))
-        (entry.find("limit_point_") == std::string::npos && entry.find("bifurcation") == std::string::npos ?
-           per_step_derived :
-           path_derived) += entry + ";";
-      // One curve row per converged step; arc-length rows add the path length and stability.
-      const auto record_step = [&](const unsigned int number, const double load_factor, const NewtonReport &report,
-                                   const std::vector<std::pair<std::string, double>> &path_columns) {
-        quantities = compute_quantities(problem);
-        // Derived quantities per step too, so curves can hold e.g. a link angle.
-        try
-          {
-            add_derived_quantities(per_step_derived, quantities, problem.expression_variables());
-          }
-        catch (const std::invalid_argument &e)
-          {
-            throw InputError("case file '" + p.case_file + "': " + e.what());
-          }
-        if (!root)
-          return;
-        std::cout << "step " << std::setw(3) << number << "  load factor " << std::setw(10)
-                  << std::setprecision(6) << load_factor << "  Newton " << std::setw(2)
-                  << report.iterations << "  residual " << std::scientific << std::setprecision(2)
-                  << report.residual << std::defaultfloat;
-        if (report.line_search_cuts)
-          std::cout << "  line search cuts " << report.line_search_cuts;
-        std::cout << std::endl;
-        if (columns.empty())
-          {
-            curve = "step,load_factor,newton_iterations";
-            for (const auto &[k, v] : path_columns)
-              curve += "," + k;
-            for (const auto &[k, v] : quantities)
-              if (k.rfind("time_", 0) != 0)
-                {
-                  columns.push_back(k);
-                  curve += "," + k;
-                }
-            curve += "\n";
-          }
-        std::ostringstream line;
-        line << number << "," << std::setprecision(12) << load_factor << "," << report.iterations;
-        for (const auto &[k, v] : path_columns)
-          line << "," << v;
-        for (const auto &k : columns)
-          line << "," << quantities[k];
-        curve += line.str() + "\n";
-        write_curve();
-      };
-      const auto on_step = [&](const AcceptedStep &accepted) {
-        record_step(accepted.number, accepted.load_factor, accepted.newton, {});
-      };
-      const auto on_cutback = [&](const double target, const std::string &why, const double next_step) {
+    RunSummary summary = start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
+    summary.settings.insert({"law", law.law});
+    summary.settings.insert({"formulation", law.mixed ? "mixed" : "displacement"});
+    summary.settings.insert({"solver", problem.linear_solver_description()});
+    summary.settings.insert({"solver_requested", context.parameters.solver_method});
+    summary.settings.insert({"mesh_partition", to_string(problem.mesh_partition.partition)});
+    summary.settings.insert({"status", failure.empty() ? "completed" : failure});
+    summary.settings.insert({"curve", curve.file});
+    summary.quantities = quantities;
+    add_path_quantities(summary, problem, outcome, path_derived, p.case_file);
+    summary.quantities["time_total"] = timer.wall_time();
+    if (amend_summary)
+      amend_summary(summary);
+    finish_run(context, summary, problem.expression_variables(),
+               [&](const std::string &directory) { write_fields(problem, directory); });
+    if (!failure.empty())
+      {
         if (root)
-          std::cout << "step to load factor " << target << " failed: " << why << "; cutting the step to "
-                    << next_step << std::endl;
-      };
-      FiniteStrainLoadPath<dim> path(problem, [&]() { return interruption.requested(comm); });
-      LoadPathResult            result;
-      std::vector<CriticalPoint> critical_points;
-      if (arc_length)
-        {
-          const auto on_arc_step = [&](const ArcLengthStep &step) {
-            record_step(step.number, step.load_factor, step.newton,
-                        {{"arc_length", step.arc_length}, {"unstable_modes", step.unstable_modes}});
-          };
-          const auto on_arc_cutback = [&](const double from, const std::string &why, const double next) {
-            if (root)
-              std::cout << "arc-length step from load factor " << from << " failed: " << why
-                        << "; cutting the step to " << next << std::endl;
-          };
-          ArcLengthResult arc;
-          try
-            {
-              arc = problem.follow_arc_length(continuation, on_arc_step, on_arc_cutback);
-            }
-          catch (const std::invalid_argument &e)
-            {
-              throw InputError("case file '" + p.case_file + "': " + e.what());
-            }
-          result.steps             = arc.steps;
-          result.cutbacks          = arc.cutbacks;
-          result.newton_iterations = arc.newton_iterations;
-          result.failure           = arc.failure;
-          result.interrupted       = arc.interrupted;
-          critical_points          = arc.critical_points;
-          report_critical_points(critical_points, root);
-        }
-      else
-        result = follow_load_path(path, stepping, on_step, on_cutback);
-      const bool                interrupted = result.interrupted;
-      std::string               failure     = result.failure;
-      if (interrupted)
-        {
-          std::ostringstream message;
-          message << "interrupted by " << interruption.signal_name(comm) << " at load factor "
-                  << problem.load_factor << " (last converged step, " << result.steps << " steps)";
-          failure = message.str();
-        }
-
-      if (root && columns.empty()) // no step converged: the curve still says what it would hold
-        {
-          curve = "step,load_factor,newton_iterations\n";
-          write_curve();
-        }
-
-      RunSummary summary =
-        start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
-      summary.settings.insert({"law", settings.law});
-      summary.settings.insert({"formulation", settings.mixed ? "mixed" : "displacement"});
-      summary.settings.insert({"solver", problem.linear_solver_description()});
-      summary.settings.insert({"solver_requested", context.parameters.solver_method});
-      summary.settings.insert({"mesh_partition", to_string(problem.mesh_partition.partition)});
-      summary.settings.insert({"status", failure.empty() ? "completed" : failure});
-      summary.settings.insert({"curve", curve_file});
-      summary.quantities = quantities;
-      summary.quantities["load_factor"]       = problem.load_factor;
-      summary.quantities["load_steps"]        = result.steps;
-      summary.quantities["step_cutbacks"]     = result.cutbacks;
-      summary.quantities["newton_iterations"] = result.newton_iterations;
-      if (result.last_stable_load_factor >= 0)
-        summary.quantities["last_stable_load_factor"] = result.last_stable_load_factor;
-      add_critical_points(critical_points, summary.quantities);
-      try
-        {
-          add_derived_quantities(path_derived, summary.quantities, problem.expression_variables());
-        }
-      catch (const std::invalid_argument &e)
-        {
-          throw InputError("case file '" + p.case_file + "': " + e.what() + " (this run found " +
-                           std::to_string(critical_points.size()) + " limit points and bifurcations)");
-        }
-      summary.quantities["time_tangent_assembly"] = problem.tangent_assembly_seconds;
-      summary.quantities["time_linear_solves"]    = problem.linear_solve_seconds;
-      summary.quantities["linear_solves"]         = problem.total_linear_solves;
-      if (problem.preconditioner_setup_seconds > 0)
-        summary.quantities["time_preconditioner_setup"] = problem.preconditioner_setup_seconds;
-      if (problem.total_linear_iterations > 0)
-        summary.quantities["linear_iterations"] = problem.total_linear_iterations;
-      summary.quantities["time_total"]        = timer.wall_time();
-      if (amend_summary)
-        amend_summary(summary);
-      finish_run(context, summary, problem.expression_variables(),
-                 [&](const std::string &directory) { write_fields(problem, directory); });
-      if (!failure.empty())
-        {
-          if (root)
-            std::cerr << "error: " << failure << "; converged steps are in " << curve_file
-                      << std::endl;
-          return interrupted ? interruption.exit_code(comm) : 3;
-        }
-      return 0;
+          std::cerr << "error: " << failure << "; converged steps are in " << curve.file << std::endl;
+        return outcome.result.interrupted ? interruption.exit_code(comm) : 3;
+      }
+    return 0;
   }
 
   template int run_nonlinear_static<2>(const RunContext &, const std::function<void(RunSummary &)> &);

@@ -80,12 +80,6 @@ namespace compliant
       return symmetrize(t);
     }
 
-    // E = (H + H^T + H^T H) / 2 from the displacement gradient H, without forming C - I.
-    template <int dim>
-    SymmetricTensor<2, dim> green_lagrange(const Tensor<2, dim> &H)
-    {
-      return symmetrize(H) + 0.5 * symmetrize(transpose(H) * H);
-    }
   } // namespace
 
   namespace
@@ -658,96 +652,6 @@ namespace compliant
         throw std::runtime_error("CG did not converge in " + std::to_string(e.last_step) +
                                  " iterations (residual " + std::to_string(e.last_residual) + ")");
       }
-  }
-
-  template <int dim>
-  PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::tangent_action(const PETScWrappers::MPI::Vector &u,
-                                                                      const PETScWrappers::MPI::Vector &v,
-                                                                      const double lambda,
-                                                                      const bool   matrix_free) const
-  {
-    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
-    PETScWrappers::MPI::Vector product(locally_owned_dofs, communicator);
-    ghosted = u;
-    AffineConstraints<double> constraints;
-    constraints.reinit(locally_relevant_dofs);
-    add_level_constraints(dof_handler, constraints);
-    constraints.close();
-    if (!matrix_free)
-      {
-        PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator);
-        assemble(ghosted, lambda, &constraints, true, rhs);
-        tangent.vmult(product, v);
-      }
-    else
-      {
-        fast_solver::TangentOperator<dim, double> op;
-        op.reinit(*mapping, dof_handler, constraints);
-        op.set_state(dof_handler, ghosted,
-                     [this](const types::material_id id, const Tensor<2, dim> &grad_u,
-                            SymmetricTensor<2, dim> &S, SymmetricTensor<4, dim> &dS_dE) {
-                       const auto r = material_response(laws.at(id), green_lagrange(grad_u), 0.0);
-                       S            = thickness * r.S;
-                       dS_dE        = thickness * r.tangent;
-                     });
-        LinearAlgebra::distributed::Vector<double> src, dst;
-        op.initialize_dof_vector(src);
-        op.initialize_dof_vector(dst);
-        for (const auto i : locally_owned_dofs)
-          src(i) = v(i);
-        op.vmult(dst, src);
-        for (const auto i : locally_owned_dofs)
-          product(i) = dst(i);
-        product.compress(VectorOperation::insert);
-      }
-    // Constrained rows differ by construction (identity against a scaled diagonal): compare
-    // the free rows only.
-    for (const auto i : locally_owned_dofs)
-      if (constraints.is_constrained(i))
-        product(i) = 0;
-    product.compress(VectorOperation::insert);
-    return product;
-  }
-
-  template <int dim>
-  unsigned int FiniteStrainProblem<dim>::unstable_modes() const
-  {
-    const auto                 homogeneous = make_constraints(load_factor, true, solution);
-    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator);
-    assemble(solution, load_factor, &homogeneous, true, rhs);
-    const unsigned int negative = count_negative_eigenvalues(tangent);
-    // K_pp = -M/lambda is negative definite: inertia(K) = inertia(K_pp) + inertia(Schur complement)
-    const auto per_component = DoFTools::count_dofs_per_fe_component(dof_handler);
-    const unsigned int n_pressure = mixed ? per_component.back() : 0;
-    return negative > n_pressure ? negative - n_pressure : 0;
-  }
-
-  template <int dim>
-  double FiniteStrainProblem<dim>::tangent_consistency(const PETScWrappers::MPI::Vector &u,
-                                                       const PETScWrappers::MPI::Vector &v,
-                                                       const double lambda, const double h) const
-  {
-    AffineConstraints<double> none;
-    none.close();
-    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
-    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator), plus(rhs), minus(rhs), Kv(rhs);
-    PETScWrappers::MPI::Vector state(locally_owned_dofs, communicator);
-    ghosted = u;
-    assemble(ghosted, lambda, &none, true, rhs);
-    tangent.vmult(Kv, v);
-    state = u;
-    state.add(h, v);
-    ghosted = state;
-    assemble(ghosted, lambda, nullptr, false, plus);
-    state.add(-2 * h, v);
-    ghosted = state;
-    assemble(ghosted, lambda, nullptr, false, minus);
-    // rhs = f_ext - f_int, so K v = -(d rhs / du) v
-    PETScWrappers::MPI::Vector difference = minus;
-    difference.add(-1, plus);
-    difference /= 2 * h;
-    difference.add(-1, Kv);
-    return difference.l2_norm() / Kv.l2_norm();
   }
 
   template <int dim>

@@ -102,6 +102,11 @@ namespace compliant
     // by Sylvester's law of inertia. Needs a symmetric tangent (no follower pressure).
     unsigned int unstable_modes() const;
 
+    // The tangent at the current state, condensed with the homogeneous constraints returned in
+    // `homogeneous` (a reference to the problem's matrix, overwritten by the next assembly).
+    const dealii::PETScWrappers::MPI::SparseMatrix &
+    assemble_tangent(dealii::AffineConstraints<double> &homogeneous) const;
+
     // Check of the consistent tangent: |K v - (R(u + h v) - R(u - h v)) / 2h| / |K v| at the
     // state u (unconstrained; meant for problems without Dirichlet conditions).
     double tangent_consistency(const dealii::PETScWrappers::MPI::Vector &u,

@@ -61,4 +61,10 @@ namespace compliant
     bool   svk, isochoric;
     double c1, c2, lambda_volumetric, mu, lambda_small_strain;
   };
+  // E = (H + H^T + H^T H) / 2 from the displacement gradient H, without forming C - I.
+  template <int dim>
+  dealii::SymmetricTensor<2, dim> green_lagrange(const dealii::Tensor<2, dim> &H)
+  {
+    return dealii::symmetrize(H) + 0.5 * dealii::symmetrize(dealii::transpose(H) * H);
+  }
 } // namespace compliant

@@ -165,6 +165,8 @@ namespace compliant
 
   template std::string write_field_files(DataOut<2> &, const LinearElasticProblem<2> &, const std::string &);
   template std::string write_field_files(DataOut<3> &, const LinearElasticProblem<3> &, const std::string &);
+  template std::string write_field_files(DataOut<2> &, const Discretization<2> &, const std::string &);
+  template std::string write_field_files(DataOut<3> &, const Discretization<3> &, const std::string &);
   template std::string write_fields(const LinearElasticProblem<2> &, const std::string &);
   template std::string write_fields(const LinearElasticProblem<3> &, const std::string &);
   template std::string write_fields(const FiniteStrainProblem<2> &, const std::string &);

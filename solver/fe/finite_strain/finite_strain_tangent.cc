@@ -1,0 +1,126 @@
+// The tangent stiffness of the finite-strain problem as a matrix in its own right: assembled at the
+// current state (buckling about a nonlinear state, the stability count), its action (the check of the
+// matrix-free operator against the assembled one) and its consistency with the residual.
+#include "finite_strain/finite_strain_problem.h"
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include "fast_solver/tangent_operator.h"
+#include "linear_algebra/petsc_linear_solver.h"
+
+namespace compliant
+{
+  using namespace dealii;
+
+  template <int dim>
+  const PETScWrappers::MPI::SparseMatrix &
+  FiniteStrainProblem<dim>::assemble_tangent(AffineConstraints<double> &homogeneous) const
+  {
+    homogeneous = make_constraints(load_factor, true, solution);
+    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator);
+    assemble(solution, load_factor, &homogeneous, true, rhs);
+    return tangent;
+  }
+
+  template <int dim>
+  unsigned int FiniteStrainProblem<dim>::unstable_modes() const
+  {
+    AffineConstraints<double> homogeneous;
+    assemble_tangent(homogeneous);
+    const unsigned int negative = count_negative_eigenvalues(tangent);
+    // K_pp = -M/lambda is negative definite: inertia(K) = inertia(K_pp) + inertia(Schur complement)
+    const auto per_component = DoFTools::count_dofs_per_fe_component(dof_handler);
+    const unsigned int n_pressure = mixed ? per_component.back() : 0;
+    return negative > n_pressure ? negative - n_pressure : 0;
+  }
+
+  template <int dim>
+  PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::tangent_action(const PETScWrappers::MPI::Vector &u,
+                                                                      const PETScWrappers::MPI::Vector &v,
+                                                                      const double lambda,
+                                                                      const bool   matrix_free) const
+  {
+    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+    PETScWrappers::MPI::Vector product(locally_owned_dofs, communicator);
+    ghosted = u;
+    AffineConstraints<double> constraints;
+    constraints.reinit(locally_relevant_dofs);
+    add_level_constraints(dof_handler, constraints);
+    constraints.close();
+    if (!matrix_free)
+      {
+        PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator);
+        assemble(ghosted, lambda, &constraints, true, rhs);
+        tangent.vmult(product, v);
+      }
+    else
+      {
+        fast_solver::TangentOperator<dim, double> op;
+        op.reinit(*mapping, dof_handler, constraints);
+        op.set_state(dof_handler, ghosted,
+                     [this](const types::material_id id, const Tensor<2, dim> &grad_u,
+                            SymmetricTensor<2, dim> &S, SymmetricTensor<4, dim> &dS_dE) {
+                       const auto r = material_response(laws.at(id), green_lagrange(grad_u), 0.0);
+                       S            = thickness * r.S;
+                       dS_dE        = thickness * r.tangent;
+                     });
+        LinearAlgebra::distributed::Vector<double> src, dst;
+        op.initialize_dof_vector(src);
+        op.initialize_dof_vector(dst);
+        for (const auto i : locally_owned_dofs)
+          src(i) = v(i);
+        op.vmult(dst, src);
+        for (const auto i : locally_owned_dofs)
+          product(i) = dst(i);
+        product.compress(VectorOperation::insert);
+      }
+    // Constrained rows differ by construction (identity against a scaled diagonal): compare
+    // the free rows only.
+    for (const auto i : locally_owned_dofs)
+      if (constraints.is_constrained(i))
+        product(i) = 0;
+    product.compress(VectorOperation::insert);
+    return product;
+  }
+
+  template <int dim>
+  double FiniteStrainProblem<dim>::tangent_consistency(const PETScWrappers::MPI::Vector &u,
+                                                       const PETScWrappers::MPI::Vector &v,
+                                                       const double lambda, const double h) const
+  {
+    AffineConstraints<double> none;
+    none.close();
+    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator), plus(rhs), minus(rhs), Kv(rhs);
+    PETScWrappers::MPI::Vector state(locally_owned_dofs, communicator);
+    ghosted = u;
+    assemble(ghosted, lambda, &none, true, rhs);
+    tangent.vmult(Kv, v);
+    state = u;
+    state.add(h, v);
+    ghosted = state;
+    assemble(ghosted, lambda, nullptr, false, plus);
+    state.add(-2 * h, v);
+    ghosted = state;
+    assemble(ghosted, lambda, nullptr, false, minus);
+    // rhs = f_ext - f_int, so K v = -(d rhs / du) v
+    PETScWrappers::MPI::Vector difference = minus;
+    difference.add(-1, plus);
+    difference /= 2 * h;
+    difference.add(-1, Kv);
+    return difference.l2_norm() / Kv.l2_norm();
+  }
+
+#define INSTANTIATE(dim)                                                                                       \
+  template const PETScWrappers::MPI::SparseMatrix &FiniteStrainProblem<dim>::assemble_tangent(                 \
+    AffineConstraints<double> &) const;                                                                        \
+  template unsigned int               FiniteStrainProblem<dim>::unstable_modes() const;                        \
+  template double                     FiniteStrainProblem<dim>::tangent_consistency(                           \
+    const PETScWrappers::MPI::Vector &, const PETScWrappers::MPI::Vector &, double, double) const;             \
+  template PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::tangent_action(                                \
+    const PETScWrappers::MPI::Vector &, const PETScWrappers::MPI::Vector &, double, bool) const;
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace compliant
