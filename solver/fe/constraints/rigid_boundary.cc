@@ -1,5 +1,8 @@
 #include "constraints/rigid_boundary.h"
 
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/sparsity_tools.h>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
@@ -585,6 +588,27 @@ namespace compliant
     return result;
   }
 
+  template <int dim>
+  void reinit_matrix(PETScWrappers::MPI::SparseMatrix &matrix, const DoFHandler<dim> &dofs,
+                     const AffineConstraints<double> &constraints, const std::vector<RigidBoundary<dim>> &rigid_boundaries,
+                     const IndexSet &owned, const IndexSet &relevant, MPI_Comm communicator)
+  {
+    // Rows of a rigid boundary's masters get entries from every cell on that boundary.
+    IndexSet rows = relevant;
+    for (const auto &rigid : rigid_boundaries)
+      rows.add_indices(rigid.master_candidates(dofs.n_dofs()));
+    DynamicSparsityPattern pattern(rows);
+    DoFTools::make_sparsity_pattern(dofs, pattern, constraints, false);
+    for (const auto &rigid : rigid_boundaries)
+      rigid.add_candidate_couplings(dofs, pattern);
+    SparsityTools::distribute_sparsity_pattern(pattern, owned, communicator, rows);
+    matrix.reinit(owned, owned, pattern, communicator);
+  }
+
   template class RigidBoundary<2>;
   template class RigidBoundary<3>;
+  template void reinit_matrix(PETScWrappers::MPI::SparseMatrix &, const DoFHandler<2> &, const AffineConstraints<double> &,
+                              const std::vector<RigidBoundary<2>> &, const IndexSet &, const IndexSet &, MPI_Comm);
+  template void reinit_matrix(PETScWrappers::MPI::SparseMatrix &, const DoFHandler<3> &, const AffineConstraints<double> &,
+                              const std::vector<RigidBoundary<3>> &, const IndexSet &, const IndexSet &, MPI_Comm);
 } // namespace compliant

@@ -127,4 +127,13 @@ namespace compliant
     void                frame_from(const std::vector<double> &values,
                                    dealii::Tensor<2, dim> &rotation, dealii::Point<dim> &center_position) const;
   };
+
+  // The matrix of a problem with rigid boundaries: the pattern of `constraints` (which name every
+  // candidate master, RigidBoundary::add_constraints with for_sparsity), the rows of the master
+  // candidates and their couplings (add_candidate_couplings).
+  template <int dim>
+  void reinit_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix, const dealii::DoFHandler<dim> &dofs,
+                     const dealii::AffineConstraints<double> &constraints,
+                     const std::vector<RigidBoundary<dim>> &rigid_boundaries, const dealii::IndexSet &owned,
+                     const dealii::IndexSet &relevant, MPI_Comm communicator);
 } // namespace compliant

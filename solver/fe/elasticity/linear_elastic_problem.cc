@@ -93,16 +93,8 @@ namespace compliant
   template <int dim>
   void LinearElasticProblem<dim>::allocate_matrix()
   {
-    // Rows of a rigid boundary's masters get entries from every cell on that boundary.
-    IndexSet rows = locally_relevant_dofs;
-    for (const auto &rigid : rigid_boundaries)
-      rows.add_indices(rigid.master_candidates(dof_handler.n_dofs()));
-    DynamicSparsityPattern dsp(rows);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    for (const auto &rigid : rigid_boundaries)
-      rigid.add_candidate_couplings(dof_handler, dsp);
-    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator, rows);
-    system_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+    reinit_matrix(system_matrix, dof_handler, constraints, rigid_boundaries, locally_owned_dofs, locally_relevant_dofs,
+                  communicator);
   }
 
   template <int dim>
