@@ -1,5 +1,7 @@
 #include "beams.h"
 
+#include "torsion.h"
+
 #include "input_checks.h"
 #include "root_finding.h"
 
@@ -149,5 +151,20 @@ namespace closed_forms
                                        const double rho, const double b, const double h)
   {
     return euler_bernoulli_cantilever_angular_frequency(n, L, E, rho, b, h) / (2.0 * M_PI);
+  }
+
+  double lateral_torsional_buckling_moment(const double L, const double E, const double nu, const double h,
+                                           const double b)
+  {
+    internal::require_positive("L", L);
+    internal::require_positive("E", E);
+    internal::require_positive("h", h);
+    internal::require_positive("b", b);
+    if (!(nu > -1 && nu < 0.5))
+      throw std::invalid_argument("closed_forms: argument 'nu' must lie in (-1, 0.5), got " + internal::format_number(nu));
+    const double I_y = h * b * b * b / 12;
+    const double G   = E / (2 * (1 + nu));
+    const double J   = torsion_constant(h, b);
+    return M_PI / L * std::sqrt(E * I_y * G * J);
   }
 } // namespace closed_forms

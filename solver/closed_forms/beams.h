@@ -51,6 +51,14 @@ namespace closed_forms
   // (kL = pi/2), negative beyond it (Timoshenko and Gere, Theory of Elastic Stability, sec. 1.5).
   double beam_column_end_moment_stiffness(double L, double E, double b, double h, double P);
 
+  // Lateral-torsional buckling moment of a narrow rectangular strip (depth h in the bending plane,
+  // width b < h), simply supported with fork ends (twist and lateral deflection held, warping and
+  // both end rotations free) under a uniform moment: M_cr = (pi / L) sqrt(E I_y G J), I_y = h b^3 / 12,
+  // J = beta h b^3 (Timoshenko and Gere, Theory of Elastic Stability, sec. 6.2). Linear: the
+  // in-plane curvature before buckling, which raises it by 1/sqrt((1 - I_y/I_z)(1 - G J/E I_z)),
+  // is left out.
+  double lateral_torsional_buckling_moment(double L, double E, double nu, double h, double b);
+
   // n-th positive root x = beta_n L of 1 + cos x cosh x = 0 (clamped-free beam), n >= 1.
   double cantilever_frequency_root(unsigned int n);
 

@@ -71,6 +71,22 @@ namespace closed_forms
            return r;
          }});
 
+      table.push_back(
+        {"lateral_torsional_buckling_moment",
+         "uniform moment that buckles a narrow strip sideways and twisted, fork ends, (pi/L) sqrt(E I_y G J) "
+         "(moment)",
+         "Timoshenko and Gere, Theory of Elastic Stability, sec. 6.2",
+         {length_L(), modulus_E(), poisson_nu(), depth_h(), positive("b", "width of the strip, b < h")},
+         [](const Args &p) {
+           Result r{lateral_torsional_buckling_moment(p.at("L"), p.at("E"), p.at("nu"), p.at("h"), p.at("b")), {}};
+           check_beam_slenderness(r, p.at("L"), p.at("h"));
+           const double ratio = p.at("b") / p.at("h");
+           warn_if(r, ratio > 0.3, "b/h = " + number(ratio) + " > 0.3: not a narrow strip; the curvature before "
+                                     "buckling raises M_cr by " + number(100 * (1 / std::sqrt(1 - ratio * ratio) - 1)) +
+                                     " % or more");
+           return r;
+         }});
+
       const std::vector<Argument> bistable_args = {
         positive("L", "span of the beam"), modulus_E(), positive("b", "out-of-plane width"),
         positive("t", "in-plane thickness"), positive("h", "apex height of the centre line (cosine shape)")};
