@@ -3,6 +3,7 @@
 // critical location, and (with --run-out) what a test that survived N repeats implies.
 #include <fatigue/history_csv.h>
 #include <fatigue/hot_spot_assessment.h>
+#include <text/text_utilities.h>
 #include <fatigue/printed_tpu.h>
 #include <fatigue/run_out.h>
 
@@ -75,18 +76,7 @@ exit status: 0 success, 1 bad input (file, column, value), 2 bad command line
     std::optional<std::string> summary_csv;
   };
 
-  std::vector<std::string>
-  split(const std::string &text, const char separator)
-  {
-    std::vector<std::string> parts;
-    std::string              part;
-    std::istringstream       stream(text);
-    while (std::getline(stream, part, separator))
-      parts.push_back(part);
-    if (!text.empty() && text.back() == separator)
-      parts.push_back("");
-    return parts;
-  }
+  using compliant::text::split;
 
   double
   parse_double(const std::string &option, const std::string &text)

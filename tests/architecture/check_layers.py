@@ -5,7 +5,7 @@ Reads the numbered list between '<!-- layers -->' and '<!-- /layers -->' in READ
 'N. `folder`, `folder` - ...' puts folders of solver/fe on layer N (1 = bottom). Every
 '#include "folder/..."' in solver/fe must name a folder on the same or a lower layer, every folder
 of solver/fe must be on a layer, and the plain C++ parts (closed forms, mechanisms, fatigue,
-nonlinear) must not include deal.II. Prints every violation; exit 1 if any."""
+nonlinear, text) must not include deal.II. Prints every violation; exit 1 if any."""
 import os
 import re
 import sys
@@ -40,7 +40,7 @@ for folder in folders:
                 if target in layer and folder in layer and layer[target] > layer[folder]:
                     problems.append("%s includes %s/ (layer %d above its own %d)"
                                     % (os.path.relpath(path, root), target, layer[target], layer[folder]))
-plain = [os.path.join(root, "solver", d) for d in ("closed_forms", "mechanisms", "fatigue")] + [os.path.join(fe, "nonlinear")]
+plain = [os.path.join(root, "solver", d) for d in ("closed_forms", "mechanisms", "fatigue", "text")] + [os.path.join(fe, "nonlinear")]
 for top in plain:
     for dirpath, _, files in os.walk(top):
         for name in files:

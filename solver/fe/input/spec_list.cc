@@ -1,5 +1,7 @@
 #include "input/spec_list.h"
 
+#include <text/text_utilities.h>
+
 #include <iomanip>
 #include <cmath>
 #include <sstream>
@@ -7,14 +9,7 @@
 
 namespace compliant
 {
-  std::string trim(const std::string &s)
-  {
-    const auto first = s.find_first_not_of(" \t\r\n");
-    if (first == std::string::npos)
-      return "";
-    const auto last = s.find_last_not_of(" \t\r\n");
-    return s.substr(first, last - first + 1);
-  }
+  std::string trim(const std::string &s) { return text::trim(s); }
 
   std::string round_trip_text(const double value)
   {

@@ -1,5 +1,7 @@
 #include "mesh/abaqus_mesh.h"
 
+#include <text/text_utilities.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -92,25 +94,8 @@ namespace compliant
       return text;
     }
 
-    std::string trim(const std::string &text)
-    {
-      const auto first = text.find_first_not_of(" \t\r");
-      if (first == std::string::npos)
-        return "";
-      return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-    }
-
-    std::vector<std::string> split(const std::string &line)
-    {
-      std::vector<std::string> fields;
-      std::stringstream         in(line);
-      std::string               field;
-      while (std::getline(in, field, ','))
-        fields.push_back(trim(field));
-      if (!line.empty() && line.back() == ',')
-        fields.push_back("");
-      return fields;
-    }
+    using text::trim;
+    std::vector<std::string> split(const std::string &line) { return text::split_trimmed(line, ','); }
 
     struct Element
     {

@@ -5,6 +5,7 @@
 // Case file: 'key = value' lines, '#' comments; keys below (see cases/morphing_wing/paper_table3.txt).
 #include <mechanisms/burmester/candidate_mechanism.h>
 #include <mechanisms/burmester/dyad_synthesis.h>
+#include <text/text_utilities.h>
 
 #include <algorithm>
 #include <cmath>
@@ -63,12 +64,7 @@ namespace
         const std::string where = file + ":" + std::to_string(n);
         if (eq == std::string::npos)
           throw InputError(where + ": expected 'key = value'");
-        auto trim = [](std::string s) {
-          s.erase(0, s.find_first_not_of(" \t\r"));
-          s.erase(s.find_last_not_of(" \t\r") + 1);
-          return s;
-        };
-        const std::string key = trim(line.substr(0, eq)), value = trim(line.substr(eq + 1));
+        const std::string key = text::trim(line.substr(0, eq)), value = text::trim(line.substr(eq + 1));
         if (key == "position")
           {
             std::istringstream v(value);

@@ -1,4 +1,5 @@
 #include <mechanisms/four_bar/flap_parameters.h>
+#include <text/text_utilities.h>
 
 #include <cmath>
 #include <fstream>
@@ -15,14 +16,7 @@ namespace compliant
       constexpr double deg = M_PI / 180.;
       constexpr double rpm = 2. * M_PI / 60.;
 
-      std::string trim(const std::string &text)
-      {
-        const auto first = text.find_first_not_of(" \t\r");
-        if (first == std::string::npos)
-          return "";
-        const auto last = text.find_last_not_of(" \t\r");
-        return text.substr(first, last - first + 1);
-      }
+      using text::trim;
 
       double to_number(const std::string &key, const std::string &text)
       {

@@ -1,4 +1,5 @@
 #include <mechanisms/jansen/jansen_parameter_file.h>
+#include <text/text_utilities.h>
 
 #include <cmath>
 #include <fstream>
@@ -12,14 +13,7 @@ namespace compliant
   {
     namespace
     {
-      std::string trimmed(const std::string &s)
-      {
-        const auto first = s.find_first_not_of(" \t\r");
-        if (first == std::string::npos)
-          return "";
-        const auto last = s.find_last_not_of(" \t\r");
-        return s.substr(first, last - first + 1);
-      }
+      std::string trimmed(const std::string &s) { return text::trim(s); }
 
       double *field(JansenLinkLengths &l, const std::string &key, double &theta1_degrees)
       {
