@@ -188,6 +188,8 @@ namespace compliant
       outcome.result.cutbacks          = arc.cutbacks;
       outcome.result.newton_iterations = arc.newton_iterations;
       outcome.result.failure           = arc.failure;
+      if (!arc.warning.empty() && root)
+        std::cout << "warning: " << arc.warning << std::endl;
       outcome.result.interrupted       = arc.interrupted;
       outcome.critical_points          = arc.critical_points;
       report_critical_points(outcome.critical_points, root);

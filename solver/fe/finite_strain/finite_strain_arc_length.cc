@@ -55,7 +55,8 @@ namespace compliant
 
     int solve(Vector &du_residual, Vector &du_load) override
     {
-      Timer timer;
+      Timer        timer;
+      unsigned int negative = 0;
       try
         {
           factorization.factor(p.tangent, symmetric);
@@ -63,6 +64,8 @@ namespace compliant
           du_load     = 0;
           factorization.solve(du_residual, rhs);
           factorization.solve(du_load, load);
+          if (symmetric)
+            negative = factorization.negative_eigenvalues();
         }
       catch (const std::runtime_error &e)
         {
@@ -75,7 +78,6 @@ namespace compliant
       if (!symmetric)
         return -1;
       // K_pp = -M/lambda is negative definite: inertia(K) = inertia(K_pp) + inertia(Schur complement)
-      const unsigned int negative = factorization.negative_eigenvalues();
       return negative > pressure_dofs ? negative - pressure_dofs : 0;
     }
 

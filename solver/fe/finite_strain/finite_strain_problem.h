@@ -168,7 +168,7 @@ namespace compliant
     // u + alpha du, with every rigid boundary put on its exact rigid motion.
     void add_correction(dealii::PETScWrappers::MPI::Vector &u, double alpha,
                         const dealii::PETScWrappers::MPI::Vector &du) const;
-    // Assembles the residual f_int - lambda f_ext (and the tangent if asked) at state u.
+    // Assembles the residual lambda f_ext - f_int (and the tangent if asked) at state u.
     // full_residual, if given, also gets it without the Dirichlet conditions (hanging nodes
     // condensed): the internal force scale of the convergence test, from the same pass.
     // Throws StepFailure when an element inverts.

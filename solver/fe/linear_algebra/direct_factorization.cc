@@ -1,5 +1,7 @@
 #include "linear_algebra/direct_factorization.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -46,8 +48,11 @@ namespace compliant
     check(KSPSetUp(ksp), "KSPSetUp (factorization)");
     PCFailedReason reason;
     check(PCGetFailedReason(pc, &reason), "PCGetFailedReason");
-    if (reason != PC_NOERROR)
-      throw std::runtime_error("the factorization failed (PETSc reason " + std::to_string(reason) +
+    // The reason is per rank: every rank throws, or none.
+    const int failed = dealii::Utilities::MPI::max(reason != PC_NOERROR ? static_cast<int>(reason) : 0,
+                                                   matrix.get_mpi_communicator());
+    if (failed != 0)
+      throw std::runtime_error("the factorization failed (PETSc reason " + std::to_string(failed) +
                                "): the tangent is singular");
   }
 

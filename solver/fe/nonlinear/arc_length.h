@@ -82,6 +82,7 @@ namespace compliant
     unsigned int               steps = 0, cutbacks = 0;
     double                     newton_iterations = 0;
     std::string                failure; // why the path ended before end_load_factor (empty: reached)
+    std::string                warning; // the path ended past end_load_factor (not solved there)
     bool                       interrupted = false;
     std::vector<CriticalPoint> critical_points;
   };
@@ -221,6 +222,7 @@ namespace compliant
               increment = trial;
               system.add(increment, -1, u);
               report.iterations = it + 1;
+              system.linearize(trial, lambda + dl); // the state the next corrections start from
               return report;
             }
         }
@@ -262,6 +264,21 @@ namespace compliant
     bool         approaching   = false; // a critical point was found in a step and is approached again
     bool         linearized_here = true; // the system's latest linearization is at (u, lambda)
 
+    // Halves the step after a failure; true when it fell below the minimum (the path stops).
+    const auto cut_back = [&](const std::string &why) {
+      ++result.cutbacks;
+      step /= 2;
+      linearized_here = false;
+      if (on_cutback)
+        on_cutback(lambda, why, step / unit);
+      if (step >= settings.minimum_step * unit)
+        return false;
+      std::ostringstream message;
+      message << "stopped at load factor " << lambda << " (last converged step): the arc-length step failed ("
+              << why << ") and the step fell below Finite strain/Minimum step = " << settings.minimum_step;
+      result.failure = message.str();
+      return true;
+    };
     while (result.steps < settings.max_steps && lambda < settings.end_load_factor)
       {
         if (system.stop_requested())
@@ -290,40 +307,47 @@ namespace compliant
           }
         catch (const StepFailure &e)
           {
-            ++result.cutbacks;
-            step /= 2;
-            if (on_cutback)
-              on_cutback(lambda, e.what(), step / unit);
-            if (step < settings.minimum_step * unit)
-              {
-                std::ostringstream message;
-                message << "stopped at load factor " << lambda << " (last converged step): the arc-length "
-                        << "step failed (" << e.what() << ") and the step fell below Finite strain/Minimum step = "
-                        << settings.minimum_step;
-                result.failure = message.str();
-                break;
-              }
+            if (cut_back(e.what()))
+              break;
             continue;
           }
         // A step past the end load factor: the state at it exactly, from the interpolated one.
-        if (lambda + dl >= settings.end_load_factor && lambda < settings.end_load_factor)
+        bool reached_end = false;
+        int  unstable_after;
+        try
           {
-            const double fraction = (settings.end_load_factor - lambda) / dl;
-            VectorType   at_end   = trial; // linearized there
-            system.add_correction(at_end, fraction - 1, increment);
-            if (arc_length_detail::solve_at_load(system, at_end, settings.end_load_factor, settings, correction,
-                                                 load_correction, report))
+            if (lambda + dl >= settings.end_load_factor && lambda < settings.end_load_factor)
               {
-                trial     = at_end;
-                increment = at_end;
-                system.add(increment, -1, u);
-                dl = settings.end_load_factor - lambda;
+                const double fraction = (settings.end_load_factor - lambda) / dl;
+                VectorType   at_end   = trial; // linearized there
+                system.add_correction(at_end, fraction - 1, increment);
+                if (arc_length_detail::solve_at_load(system, at_end, settings.end_load_factor, settings, correction,
+                                                     load_correction, report))
+                  {
+                    trial     = at_end;
+                    increment = at_end;
+                    system.add(increment, -1, u);
+                    dl          = settings.end_load_factor - lambda;
+                    reached_end = true;
+                  }
+                else // keep the step past the end; its linearization must be the last one
+                  {
+                    system.linearize(trial, lambda + dl);
+                    result.warning = "the path ends at load factor " + std::to_string(lambda + dl) +
+                                     ", past " + std::to_string(settings.end_load_factor) +
+                                     ": Newton at exactly that load factor did not converge";
+                  }
               }
-            else // keep the step past the end; its linearization must be the last one
-              system.linearize(trial, lambda + dl);
+            // The candidate's tangent (the next predictor) and inertia, from one factorization.
+            unstable_after = system.solve(correction, candidate_tangent);
           }
-        // The candidate's tangent (the next predictor) and inertia, from one factorization.
-        const int    unstable_after = system.solve(correction, candidate_tangent);
+        catch (const StepFailure &e)
+          {
+            result.warning.clear();
+            if (cut_back(e.what()))
+              break;
+            continue;
+          }
         const double tt_after       = inner(candidate_tangent, 0, candidate_tangent, 0);
         const double sign_after     = inner(increment, dl, candidate_tangent, 1) >= 0 ? 1 : -1;
         // d lambda / d s either side, in the direction travelled: opposite signs at a limit point.
@@ -333,13 +357,14 @@ namespace compliant
           {
             // Approach it again in shorter steps, so that the cubic locates it closely.
             approaching = true;
-            step /= settings.critical_refinement;
+            step        = std::max(step / settings.critical_refinement, settings.minimum_step * unit);
+            linearized_here = false;
             continue; // from the step's start, which is linearized again
           }
         const double lambda_before = lambda, arc_before = arc_length;
         const int    unstable_before = unstable;
-        u = trial;
-        lambda += dl;
+        u      = trial;
+        lambda = reached_end ? settings.end_load_factor : lambda + dl;
         previous      = increment;
         previous_dl   = dl;
         have_previous = true;
@@ -367,7 +392,8 @@ namespace compliant
           }
         on_step({result.steps, lambda, arc_length, report, unstable}, u);
         const double used = std::max<unsigned int>(report.iterations, 1);
-        step *= std::clamp(std::sqrt(settings.desired_iterations / used), 0.5, settings.step_growth);
+        // No growth while a critical point is approached in short steps.
+        step *= std::clamp(std::sqrt(settings.desired_iterations / used), 0.5, approaching ? 1.0 : settings.step_growth);
         step = std::min(step, settings.maximum_step * unit);
       }
     if (result.failure.empty() && !result.interrupted && lambda < settings.end_load_factor)

@@ -31,9 +31,15 @@ namespace
     bool                                                     stop = false;
     unsigned int                                             linearizations = 0;
 
+    Vector2 last_linearized{};
+    // Like the finite-strain problem (rigid boundaries), a correction must start from the state of
+    // the latest linearization.
+    mutable unsigned int corrections_from_elsewhere = 0;
+
     Linearization linearize(const Vector2 &u, double lambda) override
     {
       ++linearizations;
+      last_linearized = u;
       const Vector2 f = internal_force(u);
       r               = {lambda * load[0] - f[0], lambda * load[1] - f[1]};
       K               = stiffness(u);
@@ -52,7 +58,12 @@ namespace
       // inertia of a symmetric 2x2 matrix
       return det < 0 ? 1 : (K[0] + K[3] < 0 ? 2 : 0);
     }
-    void add_correction(Vector2 &u, double alpha, const Vector2 &du) const override { add(u, alpha, du); }
+    void add_correction(Vector2 &u, double alpha, const Vector2 &du) const override
+    {
+      if (u != last_linearized)
+        ++corrections_from_elsewhere;
+      add(u, alpha, du);
+    }
     void add(Vector2 &y, double a, const Vector2 &x) const override
     {
       y[0] += a * x[0];
@@ -107,6 +118,7 @@ TEST(ArcLength, SofteningSpringThroughBothLimitPoints)
   const auto        result = follow(system, u, lambda, settings, recorded);
   ASSERT_TRUE(result.failure.empty()) << result.failure;
   EXPECT_EQ(lambda, 1.0);
+  EXPECT_EQ(system.corrections_from_elsewhere, 0u);
   for (std::size_t i = 0; i < recorded.states.size(); ++i)
     {
       const auto &s = recorded.states[i];
@@ -217,6 +229,27 @@ TEST(ArcLength, StepGrowthAndInterruption)
   Recorded none;
   EXPECT_TRUE(follow(system, u, lambda, settings, none).interrupted);
   EXPECT_TRUE(none.states.empty());
+}
+
+// Any end load factor is met exactly, once (the path's last step is solved there).
+TEST(ArcLength, EndsExactlyAtAnyEndLoadFactor)
+{
+  for (const double end : {0.3, 0.7, 0.123456789})
+    {
+      TwoUnknowns       system = spring_in_series(100, 0.5);
+      Vector2           u{0, 0};
+      double            lambda = 0;
+      ArcLengthSettings settings;
+      settings.end_load_factor = end;
+      Recorded   recorded;
+      const auto result = follow(system, u, lambda, settings, recorded);
+      ASSERT_TRUE(result.failure.empty()) << result.failure;
+      EXPECT_EQ(lambda, end);
+      EXPECT_EQ(recorded.load_factors.back(), end);
+      EXPECT_LT(recorded.load_factors[recorded.load_factors.size() - 2], end);
+      EXPECT_NEAR(ss::force(u[1]), end * 0.5, 1e-9);
+      EXPECT_EQ(system.corrections_from_elsewhere, 0u);
+    }
 }
 
 // No load: a clear failure, not a division by zero.
