@@ -9,11 +9,8 @@
 3. Switching forces over Q = 4 ... 16 at h/L = 0.02 against Qiu, Lang and Slocum's 740 and 370 E I h / L^3
    (per beam), the closed forms dashed.
 """
-import csv
 import os
-import shutil
 import sys
-import tempfile
 
 import matplotlib
 
@@ -22,7 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
-from study import run_case  # noqa: E402
+from study import run_case, run_case_with_curve  # noqa: E402
 from bistable_switch import analyse  # noqa: E402
 
 root = os.path.dirname(here)
@@ -45,13 +42,7 @@ def run(sets, L, h, t, drive=False):
         sets += ["Boundary conditions/Rigid=", "Boundary conditions/Displacement=pad: x=0, y=-%g" % (2.1 * h),
                  "Finite strain/Path=load steps", "Finite strain/Maximum step=0.01",
                  "Finite strain/Stability check=false", "Quantities/Derived=", "Comparison/Checks="]
-    work = tempfile.mkdtemp(prefix="compliant-bistable-")
-    try:
-        summary = run_case(case, sets, output_dir=work)
-        with open(os.path.join(work, "curve.csv")) as f:
-            rows = list(csv.DictReader(f))
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
+    summary, rows = run_case_with_curve(case, sets)
     if drive:  # the pad's force: what the supports carry
         force = lambda r: (float(r["reaction_force_left_y"]) + float(r["reaction_force_right_y"])) / 2
         stroke = lambda r: float(r["load_factor"]) * 2.1 * h

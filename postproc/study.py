@@ -64,6 +64,17 @@ def run_case(case, sets=(), np=2, output_dir=None, quiet=True):
     return summary
 
 
+def run_case_with_curve(case, sets=(), np=2):
+    """Runs one nonlinear case; returns (summary, the rows of its curve.csv as dicts)."""
+    work = tempfile.mkdtemp(prefix="compliant-curve-")
+    try:
+        summary = run_case(case, sets, np=np, output_dir=work)
+        with open(os.path.join(work, "curve.csv")) as f:
+            return summary, list(csv.DictReader(f))
+    finally:
+        subprocess.run(["rm", "-rf", work])
+
+
 def flatten(summary):
     row = dict(summary["quantities"])
     for c in summary["comparisons"]:

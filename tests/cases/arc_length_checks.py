@@ -16,20 +16,12 @@ converge Newton to 1e-9 of the internal forces on the same mesh, so the curves a
 leaves room for the interpolation only. The path must pass both limit points
 and end at load factor 1 on the inverted branch, with the stability changes reported.
 """
-import csv
 import os
-import shutil
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
-from study import run_case  # noqa: E402
+from study import run_case_with_curve  # noqa: E402
 from case_checks import check, finish  # noqa: E402
-
-
-def curve(directory):
-    with open(os.path.join(directory, "curve.csv")) as f:
-        return list(csv.DictReader(f))
 
 
 def cubic(xs, ys, x):
@@ -65,16 +57,11 @@ def force(row):
 
 mode, case = sys.argv[1], sys.argv[2]
 if mode == "arch":
-    work = tempfile.mkdtemp(prefix="compliant-arc-")
-    try:
-        arc = run_case(case, output_dir=os.path.join(work, "arc"))
-        drive = ["Boundary conditions/Rigid=", "Boundary conditions/Displacement=apex: x=0, y=-12",
-                 "Finite strain/Path=load steps", "Finite strain/Maximum step=0.005",
-                 "Finite strain/Stability check=false"]
-        run_case(case, drive, output_dir=os.path.join(work, "drive"))
-        arc_rows, drive_rows = curve(os.path.join(work, "arc")), curve(os.path.join(work, "drive"))
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
+    arc, arc_rows = run_case_with_curve(case)
+    drive = ["Boundary conditions/Rigid=", "Boundary conditions/Displacement=apex: x=0, y=-12",
+             "Finite strain/Path=load steps", "Finite strain/Maximum step=0.005",
+             "Finite strain/Stability check=false"]
+    _, drive_rows = run_case_with_curve(case, drive)
     q = arc["quantities"]
     w_ref = [0.0] + [-float(r["displacement_crown_y"]) for r in drive_rows]
     f_ref = [0.0] + [force(r) for r in drive_rows]

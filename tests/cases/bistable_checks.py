@@ -12,15 +12,12 @@ limit points in the summary agree with the curve's extrema. The closed-form comp
 (Qiu-Lang-Slocum, large-Q limits) is printed with its validity warning, not asserted: at Q = 8
 they lie 6 and 16 % above this switch (cases/bistable/REPORT.md).
 """
-import csv
 import os
-import shutil
 import sys
-import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
-from study import run_case  # noqa: E402
+from study import run_case_with_curve  # noqa: E402
 from bistable_switch import analyse  # noqa: E402
 from case_checks import check, finish  # noqa: E402
 
@@ -30,13 +27,7 @@ push = 3 * 2 * 740 * 1000 * t ** 3 / 12 * h / L ** 3  # the case's force (twice 
 
 
 def switch(sets, label):
-    work = tempfile.mkdtemp(prefix="compliant-bistable-")
-    try:
-        summary = run_case(case, sets, output_dir=work)
-        with open(os.path.join(work, "curve.csv")) as f:
-            rows = list(csv.DictReader(f))
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
+    summary, rows = run_case_with_curve(case, sets)
     r = analyse(rows, lambda row: float(row["load_factor"]) * push, lambda row: -float(row["rigid_displacement_pad_y"]))
     q = summary["quantities"]
     print("%s: %d DoFs, %d steps, F_top %.6g, F_bottom %.6g, middle %.5g, second %.5g, barrier %.5g" %
