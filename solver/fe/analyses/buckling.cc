@@ -85,74 +85,101 @@ namespace compliant
     return modes;
   }
 
+  BucklingSettings read_buckling_settings(const dealii::ParameterHandler &prm)
+  {
+    return {static_cast<unsigned int>(prm.get_integer({"Buckling"}, "Number of modes")),
+            prm.get_double({"Buckling"}, "Tolerance"),
+            static_cast<unsigned int>(prm.get_integer({"Buckling"}, "Maximum iterations")),
+            prm.get_double({"Buckling"}, "Reference load factor")};
+  }
+
+  template <int dim>
+  LinearBuckling<dim> solve_linear_buckling(const RunContext &context, const BucklingSettings &settings)
+  {
+    const auto         &p = context.parameters;
+    LinearBuckling<dim> buckling;
+    // The reference state: the linear static solution under the case's loads, matrix kept.
+    buckling.model = solve_linear_static_model<dim>(context, p, true);
+    if (buckling.model.stopped_for_check)
+      return buckling;
+    auto &problem = *buckling.model.problem;
+    if (settings.n_modes > problem.dof_handler.n_dofs() / 2)
+      throw InputError("case file '" + p.case_file + "': Buckling/Number of modes = " +
+                       std::to_string(settings.n_modes) + " is too many for " +
+                       std::to_string(problem.dof_handler.n_dofs()) + " DoFs");
+
+    dealii::Timer                            geometric_timer;
+    dealii::PETScWrappers::MPI::SparseMatrix minus_geometric;
+    assemble_geometric_stiffness(problem, minus_geometric);
+    minus_geometric *= -1.; // K phi = lambda (-K_sigma) phi
+    buckling.geometric_seconds = geometric_timer.wall_time();
+    if (minus_geometric.frobenius_norm() == 0)
+      throw InputError("case file '" + p.case_file + "': the loads and prescribed displacements leave the "
+                       "part unstressed; buckling needs a stress state (Loads, Boundary conditions)");
+
+    EigenSettings eigen;
+    eigen.n_modes                = settings.n_modes;
+    eigen.tolerance              = settings.tolerance;
+    eigen.max_iterations         = settings.max_iterations;
+    eigen.petsc_options          = p.petsc_options;
+    eigen.shift                  = 0;
+    eigen.definite_second_matrix = false;
+    dealii::Timer eigen_timer;
+    buckling.result        = solve_eigenproblem(problem.system_matrix, minus_geometric, problem.locally_owned_dofs, eigen);
+    buckling.eigen_seconds = eigen_timer.wall_time();
+    return buckling;
+  }
+
+  template <int dim>
+  void distribute_support_constraints(const LinearElasticProblem<dim>                 &problem,
+                                      std::vector<dealii::PETScWrappers::MPI::Vector> &modes)
+  {
+    dealii::AffineConstraints<double> homogeneous;
+    homogeneous.reinit(problem.locally_relevant_dofs);
+    problem.add_support_constraints(problem.dof_handler, homogeneous, true);
+    homogeneous.close();
+    for (auto &mode : modes)
+      homogeneous.distribute(mode);
+  }
+
   namespace
   {
     template <int dim>
     int run(const RunContext &context)
     {
-      const auto   &p    = context.parameters;
-      MPI_Comm      comm = context.communicator;
-      const bool    root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-      dealii::Timer timer;
-      const BucklingSettings settings{static_cast<unsigned int>(context.prm.get_integer({"Buckling"}, "Number of modes")),
-                                      context.prm.get_double({"Buckling"}, "Tolerance"),
-                                      static_cast<unsigned int>(context.prm.get_integer({"Buckling"}, "Maximum iterations")),
-                                      context.prm.get_double({"Buckling"}, "Reference load factor")};
+      const bool             root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
+      dealii::Timer          timer;
+      const BucklingSettings settings = read_buckling_settings(context.prm);
       if (settings.reference_load_factor > 0)
         return run_buckling_about_finite_strain_state<dim>(context, settings);
 
-      // The reference state: the linear static solution under the case's loads, matrix kept.
-      auto model = solve_linear_static_model<dim>(context, p, true);
-      if (model.stopped_for_check)
+      auto buckling = solve_linear_buckling<dim>(context, settings);
+      if (buckling.model.stopped_for_check)
         return 0;
-      auto &problem = *model.problem;
-      if (settings.n_modes > problem.dof_handler.n_dofs() / 2)
-        throw InputError("case file '" + p.case_file + "': Buckling/Number of modes = " +
-                         std::to_string(settings.n_modes) + " is too many for " +
-                         std::to_string(problem.dof_handler.n_dofs()) + " DoFs");
-
-      dealii::Timer                            geometric_timer;
-      dealii::PETScWrappers::MPI::SparseMatrix minus_geometric;
-      assemble_geometric_stiffness(problem, minus_geometric);
-      minus_geometric *= -1.; // K phi = lambda (-K_sigma) phi
-      const double geometric_seconds = geometric_timer.wall_time();
-      if (minus_geometric.frobenius_norm() == 0)
-        throw InputError("case file '" + p.case_file + "': the loads and prescribed displacements leave the "
-                         "part unstressed; buckling needs a stress state (Loads, Boundary conditions)");
-
-      EigenSettings eigen;
-      eigen.n_modes                = settings.n_modes;
-      eigen.tolerance              = settings.tolerance;
-      eigen.max_iterations         = settings.max_iterations;
-      eigen.petsc_options          = p.petsc_options;
-      eigen.shift                  = 0;
-      eigen.definite_second_matrix = false;
-      dealii::Timer eigen_timer;
-      EigenResult   result = solve_eigenproblem(problem.system_matrix, minus_geometric, problem.locally_owned_dofs, eigen);
-      const double  eigen_seconds = eigen_timer.wall_time();
+      auto &problem = *buckling.model.problem;
 
       RunSummary summary = start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
       summary.settings.insert({"eigensolver", "SLEPc Krylov-Schur, shift-and-invert about 0, MUMPS"});
       summary.settings.insert({"reference_state", "linear static under the case's loads (load factor 1)"});
       summary.settings.insert({"solver", problem.solver_method});
-      summary.quantities = model.quantities;
-      auto modes = add_buckling_factors(result, 0, summary.quantities, root, eigen_seconds);
-      summary.quantities["time_geometric_stiffness"] = geometric_seconds;
+      summary.quantities = buckling.model.quantities;
+      auto modes = add_buckling_factors(buckling.result, 0, summary.quantities, root, buckling.eigen_seconds);
+      summary.quantities["time_geometric_stiffness"] = buckling.geometric_seconds;
       summary.quantities["time_total"]               = timer.wall_time();
-
-      // Mode shapes satisfy the supports held at zero.
-      dealii::AffineConstraints<double> homogeneous;
-      homogeneous.reinit(problem.locally_relevant_dofs);
-      problem.add_support_constraints(problem.dof_handler, homogeneous, true);
-      homogeneous.close();
-      for (auto &mode : modes)
-        homogeneous.distribute(mode);
+      distribute_support_constraints(problem, modes);
       finish_run(context, summary, problem.expression_variables(), [&](const std::string &directory) {
         write_mode_shapes(problem, modes, directory);
       });
       return 0;
     }
   } // namespace
+
+  template LinearBuckling<2> solve_linear_buckling<2>(const RunContext &, const BucklingSettings &);
+  template LinearBuckling<3> solve_linear_buckling<3>(const RunContext &, const BucklingSettings &);
+  template void distribute_support_constraints<2>(const LinearElasticProblem<2> &,
+                                                  std::vector<dealii::PETScWrappers::MPI::Vector> &);
+  template void distribute_support_constraints<3>(const LinearElasticProblem<3> &,
+                                                  std::vector<dealii::PETScWrappers::MPI::Vector> &);
 
   Analysis buckling_analysis()
   {

@@ -1,5 +1,6 @@
 #include "analyses/nonlinear_static.h"
 
+#include "analyses/buckling_parts.h"
 #include "analyses/interruption.h"
 #include "analyses/response_curve.h"
 
@@ -267,26 +268,41 @@ namespace compliant
     const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
     PathSettings settings = read_path_settings(const_cast<dealii::ParameterHandler &>(context.prm), p, dim);
 
-    dealii::Timer            timer;
-    FiniteStrainProblem<dim> problem(p, settings.finite_strain, context.geometry, comm,
-                                     choose_mesh_partition(context, p, ""));
-    try
+    dealii::Timer timer;
+    const auto    partition = choose_mesh_partition(context, p, "");
+    const auto    set_up    = [&](const std::shared_ptr<const GeometryImperfection> &imperfection) {
+      auto problem = std::make_unique<FiniteStrainProblem<dim>>(p, settings.finite_strain, context.geometry, comm,
+                                                                partition);
+      problem->imperfection = imperfection;
+      try
+        {
+          parse_checks(p.checks);
+          problem->setup();
+          const auto &bc = problem->boundary_conditions;
+          if (bc.clamped.empty() && bc.displacements.empty() && bc.rotations.empty())
+            throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
+                                        "a static solve needs the rigid-body motion constrained (a "
+                                        "Rigid boundary moves with the body, it does not hold it)");
+          validate_quantity_requests(*problem);
+          if (settings.arc_length)
+            problem->require_load_driven();
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw InputError("case file '" + p.case_file + "': " + e.what());
+        }
+      return problem;
+    };
+    // Geometry/Imperfection: the case is checked on the perfect geometry first, then the perfect
+    // geometry's buckling modes shift the mesh of the problem that is solved.
+    auto       problem_storage = set_up(nullptr);
+    Quantities imperfection_quantities;
+    if (!p.imperfection.empty() && !context.check_only)
       {
-        parse_checks(p.checks);
-        problem.setup();
-        const auto &bc = problem.boundary_conditions;
-        if (bc.clamped.empty() && bc.displacements.empty() && bc.rotations.empty())
-          throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
-                                      "a static solve needs the rigid-body motion constrained (a "
-                                      "Rigid boundary moves with the body, it does not hold it)");
-        validate_quantity_requests(problem);
-        if (settings.arc_length)
-          problem.require_load_driven();
+        problem_storage.reset();
+        problem_storage = set_up(buckling_mode_imperfection<dim>(context, imperfection_quantities));
       }
-    catch (const std::invalid_argument &e)
-      {
-        throw InputError("case file '" + p.case_file + "': " + e.what());
-      }
+    auto &problem = *problem_storage;
     settings.stepping.unstable_advice = unstable_advice(problem.boundary_conditions);
     const auto &law = settings.finite_strain;
     if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
@@ -343,6 +359,7 @@ namespace compliant
     summary.settings.insert({"status", failure.empty() ? "completed" : failure});
     summary.settings.insert({"curve", curve.file});
     summary.quantities = quantities;
+    summary.quantities.insert(imperfection_quantities.begin(), imperfection_quantities.end());
     add_path_quantities(summary, problem, outcome, path_derived, p.case_file);
     summary.quantities["time_total"] = timer.wall_time();
     if (amend_summary)

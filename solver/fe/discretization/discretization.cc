@@ -6,6 +6,8 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/mapping_q_eulerian.h>
+#include <deal.II/lac/la_parallel_vector.h>
 
 #include "mesh/curved_simplex_mapping.h"
 #include "mesh/mesh_reader.h"
@@ -29,7 +31,48 @@ namespace compliant
   {}
 
   template <int dim>
-  Discretization<dim>::~Discretization() = default;
+  struct Discretization<dim>::ImperfectionField
+  {
+    explicit ImperfectionField(const Triangulation<dim> &triangulation)
+      : dofs(triangulation)
+    {}
+    DoFHandler<dim>                            dofs;
+    LinearAlgebra::distributed::Vector<double> shift;
+  };
+
+  template <int dim>
+  Discretization<dim>::~Discretization()
+  {
+    mapping.reset(); // before the shift it refers to
+  }
+
+  namespace
+  {
+    // The imperfection's per-cell values on this mesh's own DoFs (ghosted, as the mapping reads
+    // them on every cell it is used on).
+    template <int dim>
+    void fill_shift(const GeometryImperfection &imperfection, const DoFHandler<dim> &dofs,
+                    LinearAlgebra::distributed::Vector<double> &shift, MPI_Comm communicator)
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+      shift.reinit(dofs.locally_owned_dofs(), relevant, communicator);
+      std::vector<types::global_dof_index> indices(dofs.get_fe().n_dofs_per_cell());
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto found = imperfection.cell_shift.find(cell->id());
+            if (found == imperfection.cell_shift.end() || found->second.size() != indices.size())
+              throw std::logic_error("Geometry/Imperfection: the mesh differs from the one the buckling "
+                                     "modes were computed on");
+            cell->get_dof_indices(indices);
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              if (shift.locally_owned_elements().is_element(indices[i]))
+                shift(indices[i]) = found->second[i];
+          }
+      shift.update_ghost_values();
+    }
+  } // namespace
 
   template <int dim>
   void Discretization<dim>::check_mesh_dimension() const
@@ -57,10 +100,22 @@ namespace compliant
           fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim, FE_DGP<dim>(degree - 1), 1);
         else
           fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
-        mapping         = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
+        if (imperfection)
+          {
+            imperfection_field = std::make_unique<ImperfectionField>(triangulation);
+            imperfection_field->dofs.distribute_dofs(FESystem<dim>(FE_Q<dim>(imperfection->degree), dim));
+            fill_shift(*imperfection, imperfection_field->dofs, imperfection_field->shift, communicator);
+            mapping = std::make_unique<MappingQEulerian<dim, LinearAlgebra::distributed::Vector<double>>>(
+              std::max(mapping_degree(geometry.curved, degree), imperfection->degree), imperfection_field->dofs,
+              imperfection_field->shift);
+          }
+        else
+          mapping = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
         quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
         face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
       }
+    else if (imperfection)
+      throw std::invalid_argument("Geometry/Imperfection needs quadrilaterals or hexahedra");
     else if (triangulation.all_reference_cells_are_simplex() && !with_pressure)
       {
         if (degree > 2) // FE_SimplexP<2>(3) crashes in deal.II 9.4.1

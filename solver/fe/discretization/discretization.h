@@ -16,6 +16,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include "discretization/boundary_conditions.h"
+#include "discretization/geometry_imperfection.h"
 #include "materials/material.h"
 #include "input/case_file.h"
 #include "mesh/gmsh_geometry.h"
@@ -59,6 +60,10 @@ namespace compliant
     std::unique_ptr<dealii::parallel::TriangulationBase<dim>> triangulation_storage;
     dealii::parallel::TriangulationBase<dim>                 &triangulation;
     std::unique_ptr<dealii::FiniteElement<dim>>               fe;
+    // Set before choose_element: the mapping becomes the perfect geometry's plus this shift.
+    std::shared_ptr<const GeometryImperfection>               imperfection;
+    struct ImperfectionField; // the shift's DoFs and vector, which the mapping refers to
+    std::unique_ptr<ImperfectionField>                        imperfection_field;
     std::unique_ptr<dealii::Mapping<dim>>                     mapping;
     std::unique_ptr<dealii::Quadrature<dim>>                  quadrature;
     std::unique_ptr<dealii::Quadrature<dim - 1>>              face_quadrature;

@@ -45,6 +45,16 @@ namespace compliant
                         "Abaqus/CalculiX .inp mesh (element and node sets and surfaces are the "
                         "group names; see README, Geometry). "
                         "Relative paths are looked up next to the case file, then in meshes/.");
+      prm.declare_entry("Imperfection", "", Patterns::Anything(),
+                        "Nonlinear static analyses: the geometry shifted by buckling mode shapes before "
+                        "the run, '<mode>: <amplitude>[, <mode>: <amplitude> ...]' (e.g. '1: 0.01'). "
+                        "The modes are those of Analysis = buckling on the perfect geometry under the "
+                        "case's loads (settings from the Buckling subsection), each scaled so that its "
+                        "largest displacement component is the amplitude (a length, any sign; where a "
+                        "positive and a negative component are equally large, as in antisymmetric "
+                        "modes, the one at the smallest x, then y, then z, takes the amplitude's sign). "
+                        "A path that would meet a bifurcation then follows the buckled branch. Empty: "
+                        "the perfect geometry.");
       prm.enter_subsection("Parameters");
       for (const auto &p : geometry_parameters)
         prm.declare_entry(p.name, round_trip_text(p.value), Patterns::Double(),
@@ -480,10 +490,23 @@ namespace compliant
       return p;
     p.mesh_file           = parsed.mesh_file;
     p.geometry_parameters = parsed.geometry_parameters;
+    p.analysis            = prm.get("Analysis");
+    prm.enter_subsection("Geometry");
+    try
+      {
+        p.imperfection = parse_imperfection(prm.get("Imperfection"));
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("case file '" + p.case_file + "', Geometry/Imperfection: " + e.what());
+      }
+    prm.leave_subsection();
+    if (!p.imperfection.empty() && p.analysis != "nonlinear static")
+      throw InputError("case file '" + p.case_file + "', Geometry/Imperfection: an imperfection shapes the "
+                       "path of a nonlinear static analysis, not a " + p.analysis + " analysis");
 
     p.model     = prm.get("Model");
     p.dimension = p.model == "3d" ? 3 : 2;
-    p.analysis  = prm.get("Analysis");
 
     prm.enter_subsection("Discretization");
     p.element_degree     = prm.get_integer("Element degree");

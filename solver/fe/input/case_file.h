@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include "input/imperfection_spec.h"
 #include "mesh/gmsh_geometry.h"
 
 #include <functional>
@@ -29,6 +30,7 @@ namespace compliant
 
     std::string                   mesh_file; // resolved path
     std::map<std::string, double> geometry_parameters;
+    std::vector<ImperfectionMode> imperfection; // Geometry/Imperfection (nonlinear static)
 
     unsigned int element_degree     = 2;
     unsigned int global_refinements = 0;
