@@ -19,7 +19,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
 from study import run_case_with_curve  # noqa: E402
 from bistable_switch import analyse  # noqa: E402
-from case_checks import check, finish  # noqa: E402
+from case_checks import check, finish, unknown_mode  # noqa: E402
 
 mode, case = sys.argv[1], sys.argv[2]
 L, h, t = 400.0, 8.0, 1.0
@@ -49,9 +49,21 @@ if mode == "converged":
           "limit_point_2 is the curve's minimum (%.6g, %.6g)" % (-q["limit_point_2"] * push, coarse["force_bottom"]))
     second = coarse["stroke_second"]
     check(0.97 * 2 * h < second <= 2 * h, "second stable position %.4g = %.4f x 2h" % (second, second / (2 * h)))
+    # The README's figures, each to 3 units of its last digit: forward 696.6 and pull-back 310.7
+    # E I h / L^3 per beam, second stable position 0.984 of 2h.
+    unit = 1000 * t ** 3 / 12 * h / L ** 3
+    for what, value, figure, tolerance in (("forward switching force per beam", coarse["force_top"] / 2 / unit, 696.6, 0.3),
+                                           ("pull-back switching force per beam", abs(coarse["force_bottom"]) / 2 / unit, 310.7, 0.3),
+                                           ("second stable position / 2h", second / (2 * h), 0.984, 0.003)):
+        check(abs(value - figure) <= tolerance, "%s %.5g is the README's %.4g (+- %.1g)" % (what, value, figure, tolerance))
     _, fine = switch(["Geometry/Parameters/n=200"], "fine mesh (n = 200)")
     for key in ("force_top", "force_bottom", "stroke_second", "barrier"):
         change = coarse[key] / fine[key] - 1
         check(abs(change) < 0.01, "%s converged: n = 100 %.6g, n = 200 %.6g (%+.3f %%)" %
               (key, coarse[key], fine[key], 100 * change))
+        if key != "barrier":  # README: "mesh-converged to 0.02 %" (the forces and the stable position)
+            check(abs(change) <= 0.0005, "%s: n = 100 within the README's 0.02 %% (+ 3 units: 0.05 %%) of n = 200 (%+.3f %%)"
+                  % (key, 100 * change))
+else:
+    unknown_mode(mode, ("converged",))
 finish()

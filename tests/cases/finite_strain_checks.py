@@ -14,20 +14,23 @@ here = os.path.dirname(os.path.abspath(__file__))
 cases = os.path.join(here, "..", "..", "cases")
 sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
 from study import mpi_env, run_case, solver_path  # noqa: E402
-from case_checks import check, finish  # noqa: E402
+from case_checks import check, finish, unknown_mode  # noqa: E402
 
 
 mode = sys.argv[1]
 if mode == "small_load":
-    # In the small-load limit the nonlinear solve is the linear one (plane strain, nu = 0.3).
+    # In the small-load limit the nonlinear solve is the linear one (plane strain, nu = 0.3). README:
+    # "nonlinear = linear to 8 digits": relative difference at most 1e-8 (strain ~1e-6, so the
+    # geometric terms are ~1e-6 of the strain, ~1e-12 relative; Newton converges to 1e-9 of the
+    # force scale).
     case = os.path.join(cases, "verification", "cantilever_2d.prm")
     sets = ["Model=plane strain", "Loads/Total force=", "Loads/Traction=right: 0 -1e-4"]
     linear = run_case(case, sets + ["Analysis=linear static"])["quantities"]
     nonlinear = run_case(case, sets + ["Analysis=nonlinear static"])["quantities"]
     for key in ("mean_displacement_right_y", "reaction_force_left_y", "reaction_moment_left_z"):
         a, b = linear[key], nonlinear[key]
-        print("%-28s linear %.10g  nonlinear %.10g" % (key, a, b))
-        check(abs(a - b) <= 1e-5 * abs(a), "%s agrees to 1e-5 (strain ~1e-6: geometric terms ~1e-6)" % key)
+        print("%-28s linear %.12g  nonlinear %.12g" % (key, a, b))
+        check(abs(a - b) <= 1e-8 * abs(a), "%s agrees to 8 digits (README; %.1e)" % (key, abs(a - b) / abs(a)))
 elif mode == "cutback":
     # A single step to the full half-circle roll-up fails; the run cuts back and still arrives.
     s = run_case(os.path.join(cases, "verification", "rollup_2d.prm"),
@@ -68,6 +71,8 @@ elif mode == "stop":
     check(0 < summary["quantities"]["load_factor"] < 1, "stopped short of the full load")
 elif mode == "locking":
     # Cook's membrane, plane strain, nu = 0.4999: displacement-only Q1 collapses, mixed does not.
+    # README (8 x 8): Q1 displacement 4.85 (12.93 at nu = 0.3), Q1-P0 12.18, Q2-P1 12.66, each asserted
+    # to 3 units of its last digit (0.03).
     case = os.path.join(cases, "verification", "cook_membrane_neo_hooke.prm")
 
     def corner(degree, formulation, nu):
@@ -78,7 +83,12 @@ elif mode == "locking":
     q1p0 = corner(1, "mixed", 0.4999)
     q2p1 = corner(2, "mixed", 0.4999)
     q2p1_compressible = corner(2, "mixed", 0.49)
-    print("nu=0.4999: Q1 %.4f  Q1-P0 %.4f  Q2-P1 %.4f;  Q2-P1 at nu=0.49: %.4f" % (q1, q1p0, q2p1, q2p1_compressible))
+    q1_nu03 = corner(1, "displacement", 0.3)
+    print("nu=0.4999: Q1 %.4f  Q1-P0 %.4f  Q2-P1 %.4f;  Q2-P1 at nu=0.49: %.4f; Q1 at nu=0.3: %.4f"
+          % (q1, q1p0, q2p1, q2p1_compressible, q1_nu03))
+    for label, value, figure in (("Q1, nu = 0.4999", q1, 4.85), ("Q1, nu = 0.3", q1_nu03, 12.93),
+                                 ("Q1-P0", q1p0, 12.18), ("Q2-P1", q2p1, 12.66)):
+        check(abs(value - figure) <= 0.03, "%s: %.4f is the README's %.2f (+- 0.03)" % (label, value, figure))
     check(q1 < 0.5 * q2p1, "displacement-only Q1 locks (less than half of Q2-P1)")
     check(abs(q1p0 / q2p1 - 1) < 0.05, "mixed Q1-P0 and Q2-P1 agree within 5 %")
     check(abs(q2p1 / q2p1_compressible - 1) < 0.02, "mixed Q2-P1 barely changes from nu = 0.49 to 0.4999")
@@ -94,6 +104,14 @@ elif mode == "snap":
     print(p.stderr.strip()[-400:])
     q = json.load(open(os.path.join(out, "summary.json")))["quantities"]
     print("load control stops at load factor %.5f, crown %.4f" % (q["load_factor"], q["displacement_crown_y"]))
+    check(abs(q["load_factor"] - 0.1999) <= 0.0003, "stops at the README's load factor 0.1999 (+- 0.0003): %.5f"
+          % q["load_factor"])
+    # ... which is the limit: the case's own load (apex traction 0.3) followed by arc length reaches its
+    # limit point at 0.0334287 of it; load control with 0.05 must stop within its minimum step (0.002 of
+    # 0.05, 1 % of the limit load) below that force.
+    limit = run_case(case, ["Finite strain/Path=arc length"])["quantities"]["limit_point_1"] * 0.3
+    ratio = q["load_factor"] * 0.05 / limit
+    check(0.99 <= ratio <= 1.0, "load control stops at %.4f of the arc-length limit load %.6g" % (ratio, limit))
     check(p.returncode == 3 and "stopped at load factor" in p.stderr, "load control stops and says where")
     check(q["displacement_crown_y"] > -5, "no silent jump to the snapped branch (crown above -5)")
     s = run_case(case, ["Loads/Traction=", "Boundary conditions/Displacement=apex: y=-12",
@@ -146,10 +164,15 @@ elif mode == "plane_stress_pressure":
     lame = 0.01 * 100 / (1000 * 300) * (0.7 * 10 + 1.3 * 400 / 10)
     print("small pressure: u(a) %.9g, Lame plane stress %.9g (%.1e)" % (small, lame, small / lame - 1))
     check(abs(small / lame - 1) < 1e-4, "small follower pressure in plane stress: Lame's plane-stress u(a) to 1e-4")
+    check(abs(abs(small / lame - 1) - 2.8e-5) <= 3e-6, "... at the README's 2.8e-5 (+- 3e-6): %.2e" % abs(small / lame - 1))
     plane, slab = ring("2d", 100), ring("3d", 100)
     for key in ("displacement_inner_x", "displacement_outer_x"):
         print("p = 100: %s plane stress %.9g, 3D slab %.9g (%.1e)" % (key, plane[key], slab[key], plane[key] / slab[key] - 1))
         check(abs(plane[key] / slab[key] - 1) < 1e-3, "p = 100: plane stress and the thin 3D slab agree on %s to 1e-3" % key)
+    gap = abs(plane["displacement_inner_x"] / slab["displacement_inner_x"] - 1)
+    check(abs(gap - 1.3e-4) <= 3e-5, "p = 100: u(a) of plane stress and the slab agree to the README's 1.3e-4 (+- 3e-5): %.2e" % gap)
     per_step = plane["newton_iterations"] / plane["load_steps"]
     check(per_step <= 4, "plane stress: at most 4 Newton iterations per step (%.1f: the tangent is consistent)" % per_step)
+else:
+    unknown_mode(mode, ("small_load", "cutback", "stop", "locking", "snap", "matrix_free", "plane_stress_pressure"))
 finish()

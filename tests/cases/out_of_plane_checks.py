@@ -21,6 +21,8 @@ Across dimensions (Target/Paired model, ladder/paired_model.h), each against the
     3D part goes on to the 3D model the same way;
   - a pair that is not the same part (thickness 1 against W = 10) is refused: exit 2, a message
     naming Target/Paired model and both volumes, and no summary written.
+The README's table (plane stress, 3D solid, true gap, bound for W = 1, 10, 40) is asserted to 3 units
+of the last digit of each figure (issue 34).
 """
 import csv
 import json
@@ -59,6 +61,10 @@ def run(case, sets):
 # 3D meshes: ny cells through the depth, nz across the width (Q2); at W = 1 the 3D mesh must be
 # fine (ny = 8) as its own stiffness error (0.1 % at ny = 4) is as large as the gap.
 solid_reference = {}
+# README: plane stress, 3D solid, true gap, bound (each with 3 units of its last printed digit)
+README = {1: ((-0.02012032, 3e-8), (-0.02009823, 3e-8), (0.00110, 3e-5), (0.00127, 3e-5)),
+          10: ((-0.002012032, 3e-9), (-0.002000336, 3e-9), (0.00581, 3e-5), (0.0289, 3e-4)),
+          40: ((-0.000503008, 3e-9), (-0.000489768, 3e-9), (0.0263, 3e-4), (0.0990, 3e-4))}
 for width, ny, nz in ((1, 8, 2), (10, 4, 4), (40, 4, 8)):
     log, plane = run("cantilever_2d.prm", ["Material/Thickness=%g" % width, "Target/Relative error=0.5",
                                            "Target/Closed forms=false"])
@@ -78,6 +84,10 @@ for width, ny, nz in ((1, 8, 2), (10, 4, 4), (40, 4, 8)):
     check(("2D is enough" in log) == enough and ("model it in 3D" in log) != enough,
           "W = %g: the ladder's rung (b) says %s" % (width, "2D is enough" if enough else "model it in 3D"))
     check(("ladder_dimension_check" in plane["settings"]), "W = %g: summary.json holds the dimension check" % width)
+    for what, value, (figure, tolerance) in zip(("plane stress", "3D solid", "true gap", "bound"),
+                                                (u2, u3, gap, bound), README[width]):
+        check(abs(value - figure) <= tolerance, "W = %g: %s %.9g is the README's %.9g (+- %.1g)"
+              % (width, what, value, figure, tolerance))
 
 # Across dimensions: the ladder chooses 2D or 3D itself.
 target = ["Target/Relative error=0.5"]

@@ -2,6 +2,14 @@
 """Checks of rigid boundaries (Boundary conditions/Rigid) that need more than one run.
 
     rigid_boundary_checks.py linear_3d | small_load | ranks
+
+The README's figures (Case files, rigid boundaries), asserted as stated (issue 34): pure bending in
+3D, theta and v to 4e-11 (measured 2.5e-11, 2.0e-11, 3.7e-11; bar 7e-11, 3 units of the figure's
+digit above it; 2D to 1e-11 is case.rigid_end_moment); the torque's twist needs the torque to 3e-9
+(measured 3.2e-9; bar 6e-9); finite strain at a small load = linear to 1e-5 (the rotation is ~1e-5,
+so the geometric terms are of that order: measured 1.0e-5 on the moment, 9.8e-6 on the deflection;
+bar 2e-5), the end moving in by 1/2 int v'^2 dx to 0.02 % (measured -0.022 %; bar 0.03 %); 1, 2 and
+3 ranks the same to 1e-12.
 """
 import os
 import sys
@@ -27,11 +35,11 @@ if mode == "linear_3d":
     # Pure bending about y and z at once is quadratic: Q2 gives Euler's rotations to round-off.
     q = run_case(bar, bar_sets + ["Boundary conditions/Rigid=right: moment=0 0.5 1"])["quantities"]
     EI = 1000 / 12
-    check(abs(q["rigid_rotation_right_z"] / (1 * 10 / EI) - 1) < 1e-9,
+    check(abs(q["rigid_rotation_right_z"] / (1 * 10 / EI) - 1) < 7e-11,
           "theta_z = M_z L / E I: %.12g" % q["rigid_rotation_right_z"])
-    check(abs(q["rigid_rotation_right_y"] / (0.5 * 10 / EI) - 1) < 1e-9,
+    check(abs(q["rigid_rotation_right_y"] / (0.5 * 10 / EI) - 1) < 7e-11,
           "theta_y = M_y L / E I: %.12g" % q["rigid_rotation_right_y"])
-    check(abs(q["rigid_displacement_right_y"] / (1 * 100 / (2 * EI)) - 1) < 1e-9,
+    check(abs(q["rigid_displacement_right_y"] / (1 * 100 / (2 * EI)) - 1) < 7e-11,
           "v = M_z L^2 / 2 E I: %.12g" % q["rigid_displacement_right_y"])
     check(abs(q["rigid_rotation_right_x"]) < 1e-9, "no twist: %.3g" % q["rigid_rotation_right_x"])
     check(abs(q["reaction_moment_left_z"] + 1) < 1e-9 and abs(q["reaction_moment_left_y"] + 0.5) < 1e-9,
@@ -46,7 +54,7 @@ if mode == "linear_3d":
     twist = torque["rigid_rotation_right_x"]
     drive = run_case(bar, bar_sets + ["Boundary conditions/Rotation=right: angle=%.17g, center=10 0 0, axis=1 0 0" % twist])["quantities"]
     print("twist %.12g, moment needed %.12g" % (twist, drive["reaction_moment_right_x"]))
-    check(abs(drive["reaction_moment_right_x"] / 1e-3 - 1) < 1e-7,
+    check(abs(drive["reaction_moment_right_x"] / 1e-3 - 1) < 6e-9,
           "reciprocity: the torque's twist, prescribed, needs the torque (%.10g)" % drive["reaction_moment_right_x"])
     check(abs(torque["rigid_displacement_right_y"]) < 1e-10 and abs(torque["rigid_displacement_right_z"]) < 1e-10,
           "the twisted end does not translate")
@@ -62,7 +70,7 @@ elif mode == "small_load":
                 "reaction_force_left_y"):
         a, b = linear[key], nonlinear[key]
         print("%-28s linear %.10g  nonlinear %.10g" % (key, a, b))
-        check(abs(a - b) <= 1e-4 * abs(a), "%s agrees to 1e-4" % key)
+        check(abs(a - b) <= 2e-5 * abs(a), "%s agrees to 1e-5 (README; %.1e)" % (key, abs(a - b) / abs(a)))
     # The axial displacement (2e-7) is shortened by the bending, 1/2 int v'^2 dx (3e-3 of it):
     # the finite-strain answer must show that second-order term, to 1 %.
     EI, M, P, L, n = 1000 / 12, 1e-4, 1e-5, 10, 10000
@@ -70,7 +78,8 @@ elif mode == "small_load":
                      for x in ((i + 0.5) * L / n for i in range(n)))
     measured = linear["rigid_displacement_right_x"] - nonlinear["rigid_displacement_right_x"]
     print("bending shortening: beam %.6g, finite strain %.6g" % (shortening, measured))
-    check(abs(measured / shortening - 1) < 0.01, "the end moves in by 1/2 int v'^2 dx (1 %)")
+    check(abs(measured / shortening - 1) < 3e-4, "the end moves in by 1/2 int v'^2 dx to 0.02 %% (README; %+.2e)"
+          % (measured / shortening - 1))
 elif mode == "ranks":
     # The rigid constraint ties nodes that METIS puts on different ranks: 1, 2 and 3 ranks agree.
     case = os.path.join(cases, "verification", "rollup_rigid_moment.prm")
@@ -79,8 +88,8 @@ elif mode == "ranks":
     for key in ("rigid_rotation_right_z", "displacement_tip_x", "displacement_tip_y"):
         values = [r[key] for r in results]
         print("%-24s %s" % (key, " ".join("%.12g" % v for v in values)))
-        check(max(abs(v - values[0]) for v in values) <= 1e-8 * abs(values[0]),
-              "%s the same on 1, 2, 3 ranks (1e-8: Newton's tolerance)" % key)
+        spread = max(abs(v - values[0]) for v in values) / abs(values[0])
+        check(spread <= 1e-12, "%s the same on 1, 2, 3 ranks to 1e-12 (README; %.1e)" % (key, spread))
 else:
     sys.exit("unknown mode " + mode)
 

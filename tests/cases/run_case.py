@@ -23,6 +23,8 @@ def main():
     ap.add_argument("--set", action="append", default=[])
     ap.add_argument("--check", action="append", default=[])
     args = ap.parse_args()
+    if not args.check:  # a run with nothing checked verifies nothing: fail rather than pass silently
+        sys.exit("FAIL no --check given")
     summary = run_case(args.case, args.set, args.np)
     q = summary["quantities"]
     p = summary["parameters"]

@@ -71,6 +71,8 @@ def main():
     ap.add_argument("--check", action="append", default=[])
     ap.add_argument("--expect-error")
     args = ap.parse_args()
+    if not args.check and args.expect_error is None:  # nothing checked: fail rather than pass silently
+        sys.exit("FAIL neither --check nor --expect-error given")
     with tempfile.TemporaryDirectory(prefix="section-check-") as output_dir:
         cmd, proc = run(args.case, args.set, output_dir)
         if args.expect_error is not None:

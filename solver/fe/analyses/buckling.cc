@@ -137,6 +137,8 @@ namespace compliant
     dealii::AffineConstraints<double> homogeneous;
     homogeneous.reinit(problem.locally_relevant_dofs);
     problem.add_support_constraints(problem.dof_handler, homogeneous, true);
+    for (const auto &rigid : problem.rigid_boundaries)
+      rigid.add_constraints(homogeneous); // a rigid piece moves rigidly in the mode too
     homogeneous.close();
     for (auto &mode : modes)
       homogeneous.distribute(mode);

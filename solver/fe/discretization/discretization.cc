@@ -105,6 +105,7 @@ namespace compliant
             imperfection_field = std::make_unique<ImperfectionField>(triangulation);
             imperfection_field->dofs.distribute_dofs(FESystem<dim>(FE_Q<dim>(imperfection->degree), dim));
             fill_shift(*imperfection, imperfection_field->dofs, imperfection_field->shift, communicator);
+            perfect_mapping = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
             mapping = std::make_unique<MappingQEulerian<dim, LinearAlgebra::distributed::Vector<double>>>(
               std::max(mapping_degree(geometry.curved, degree), imperfection->degree), imperfection_field->dofs,
               imperfection_field->shift);

@@ -65,6 +65,13 @@ namespace compliant
     struct ImperfectionField; // the shift's DoFs and vector, which the mapping refers to
     std::unique_ptr<ImperfectionField>                        imperfection_field;
     std::unique_ptr<dealii::Mapping<dim>>                     mapping;
+    // Points named in the case file are material points of the perfect geometry: located with its
+    // mapping, evaluated with the (imperfect) one.
+    const dealii::Mapping<dim> &point_mapping() const
+    {
+      return perfect_mapping ? *perfect_mapping : *mapping;
+    }
+    std::unique_ptr<dealii::Mapping<dim>> perfect_mapping; // with an imperfection only
     std::unique_ptr<dealii::Quadrature<dim>>                  quadrature;
     std::unique_ptr<dealii::Quadrature<dim - 1>>              face_quadrature;
     dealii::DoFHandler<dim>                                   dof_handler;

@@ -532,10 +532,11 @@ namespace compliant
     p.rotation     = prm.get("Rotation");
     p.rigid        = prm.get("Rigid");
     prm.leave_subsection();
-    if (!trim(p.rigid).empty() && p.analysis != "linear static" && p.analysis != "nonlinear static")
+    if (!trim(p.rigid).empty() && p.analysis != "linear static" && p.analysis != "nonlinear static" &&
+        p.analysis != "buckling")
       throw InputError("case file '" + p.case_file + "', Boundary conditions/Rigid: rigid "
-                       "boundaries are available in linear static and nonlinear static analyses, "
-                       "not in " + p.analysis);
+                       "boundaries are available in linear static, nonlinear static and buckling "
+                       "analyses, not in " + p.analysis);
 
     prm.enter_subsection("Loads");
     p.traction    = prm.get("Traction");

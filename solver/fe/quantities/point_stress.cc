@@ -187,7 +187,7 @@ namespace compliant
     for (const auto &[name, point] : stress_points<dim>(problem.parameters))
       {
         const double owners = Utilities::MPI::sum(
-          owned_cell_around(*problem.mapping, problem.dof_handler, point).first.state() == IteratorState::valid ? 1.0 : 0.0,
+          owned_cell_around(problem.point_mapping(), problem.dof_handler, point).first.state() == IteratorState::valid ? 1.0 : 0.0,
           problem.communicator);
         if (owners == 0)
           throw std::invalid_argument("Quantities/Stress points: point '" + name + "' lies outside the mesh");
@@ -209,7 +209,7 @@ namespace compliant
         // distributed mesh a point on a rank boundary may be claimed twice.
         SymmetricTensor<2, 3> smooth, raw;
         double                owners = 0;
-        const auto [cell, unit_point] = owned_cell_around(*problem.mapping, problem.dof_handler, point);
+        const auto [cell, unit_point] = owned_cell_around(problem.point_mapping(), problem.dof_handler, point);
         if (cell.state() == IteratorState::valid)
           {
             owners = 1;

@@ -69,7 +69,7 @@ namespace compliant
     {
       Tensor<1, dim> value;
       double         owner_count = 0;
-      const auto cell_and_point = owned_cell_around(*problem.mapping, problem.dof_handler, p);
+      const auto cell_and_point = owned_cell_around(problem.point_mapping(), problem.dof_handler, p);
       if (cell_and_point.first.state() == IteratorState::valid)
         {
           const Quadrature<dim> q(cell_and_point.second);

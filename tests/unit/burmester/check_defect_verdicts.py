@@ -11,7 +11,9 @@ toggle on the way. Every candidate reported 'none' must pass; every candidate th
 must be reported 'none', unless the reported distance to a toggle is below the sampling step.
 It also recomputes the transmission angle at the positions and the paper's filter (Grashof, link
 bounds and transmission angle limits read from the case file) for every candidate.
-Usage: check_defect_verdicts.py CASE OUT  (the case file, the folder burmester_synthesis wrote)."""
+Usage: check_defect_verdicts.py CASE OUT [CANDIDATES CLEAN]  (the case file, the folder
+burmester_synthesis wrote; optionally the number of candidates and of defect-free ones by this check
+that the README states, which must then match exactly)."""
 import csv
 import math
 import os
@@ -19,6 +21,8 @@ import sys
 
 import numpy as np
 
+if len(sys.argv) not in (3, 5):
+    sys.exit("usage: check_defect_verdicts.py CASE OUT [CANDIDATES CLEAN]")
 case, folder = sys.argv[1], sys.argv[2]
 pos = list(csv.DictReader(open(os.path.join(folder, "positions.csv"))))
 R = np.array([complex(float(p["x"]), float(p["y"])) for p in pos])
@@ -97,4 +101,7 @@ for k in missed[:5]:
 if len(false_clean) or len(missed):
     sys.exit("FAIL: %d reported defect-free wrongly, %d clean ones reported defective"
              % (len(false_clean), len(missed)))
+if len(sys.argv) == 5 and (len(rows), int(clean.sum())) != (int(sys.argv[3]), int(sys.argv[4])):
+    sys.exit("FAIL: %d candidates, %d defect-free by this check; the README states %s and %s"
+             % (len(rows), clean.sum(), sys.argv[3], sys.argv[4]))
 print("PASS")
