@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 86 inputs.
-README_CENSUS = {"refused with exit 2": 76, "tool errors with exit 1": 6, "must work": 3, "rank failing alone": 1}
+# The README's census of the corpus: 87 inputs.
+README_CENSUS = {"refused with exit 2": 77, "tool errors with exit 1": 6, "must work": 3, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -236,6 +236,10 @@ solver_case("a .geo gmsh cannot read", [plain_case, S, "Geometry/Mesh file=" + b
 solver_case("arc length on a displacement drive",
             [os.path.join(root, "cases", "verification", "cosine_beam_displacement.prm"), S,
              "Finite strain/Path=arc length"], ["cosine_beam_displacement.prm", "Path = arc length", "displacement"])
+# Linear buckling would leave out the geometric stiffness of the forces a rigid piece carries.
+solver_case("linear buckling with a rigid boundary",
+            [os.path.join(root, "cases", "verification", "arch_arc_length.prm"), S, "Analysis=buckling"],
+            ["arch_arc_length.prm", "Boundary conditions/Rigid", "Reference load factor"])
 # Geometry/Imperfection: malformed, and on an analysis it does not shape.
 column_imperfect = os.path.join(root, "cases", "verification", "column_imperfection.prm")
 solver_case("imperfection without an amplitude", [column_imperfect, S, "Geometry/Imperfection=1"],

@@ -155,6 +155,11 @@ namespace compliant
       if (settings.reference_load_factor > 0)
         return run_buckling_about_finite_strain_state<dim>(context, settings);
 
+      if (context.parameters.rigid.find_first_not_of(" \t\r\n") != std::string::npos)
+        throw InputError("case file '" + context.parameters.case_file + "', Boundary conditions/Rigid: linear "
+                         "buckling leaves out the rigid pieces' geometric stiffness (the turn of the forces "
+                         "they carry); buckle about a finite-strain state instead (Buckling/Reference load "
+                         "factor > 0)");
       auto buckling = solve_linear_buckling<dim>(context, settings);
       if (buckling.model.stopped_for_check)
         return 0;

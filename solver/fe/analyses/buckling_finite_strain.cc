@@ -96,6 +96,7 @@ namespace compliant
     eigen.max_iterations         = settings.max_iterations;
     eigen.petsc_options          = p.petsc_options;
     eigen.definite_second_matrix = false;
+    eigen.symmetric              = dim == 2 || problem.rigid_boundaries.empty(); // 3D rigid: unsymmetric
     dealii::Timer eigen_timer;
     EigenResult   result = solve_eigenproblem(tangent, change, problem.locally_owned_dofs, eigen);
 

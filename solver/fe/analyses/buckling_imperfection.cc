@@ -27,7 +27,6 @@ namespace compliant
       MPI_Comm     comm = problem.communicator;
       const auto  &fe   = *problem.fe;
       double       most = 0, least = 0; // largest and smallest displacement component
-      std::vector<double>                          values(fe.n_dofs_per_cell());
       std::vector<dealii::types::global_dof_index> indices(fe.n_dofs_per_cell());
       for (const auto &cell : problem.dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -36,9 +35,8 @@ namespace compliant
             for (unsigned int i = 0; i < indices.size(); ++i)
               if (fe.system_to_component_index(i).first < dim)
                 {
-                  values[i] = mode(indices[i]);
-                  most      = std::max(most, values[i]);
-                  least     = std::min(least, values[i]);
+                  most  = std::max(most, mode(indices[i]));
+                  least = std::min(least, mode(indices[i]));
                 }
           }
       most    = dealii::Utilities::MPI::max(most, comm);
@@ -86,6 +84,9 @@ namespace compliant
       settings.n_modes = std::max(settings.n_modes, m.mode);
     if (root)
       std::cout << "Imperfection: linear buckling of the perfect geometry under the case's loads" << std::endl;
+    if (root && p.rigid.find_first_not_of(" \t\r\n") != std::string::npos)
+      std::cout << "Imperfection: linear buckling leaves out the rigid pieces' geometric stiffness: the "
+                   "shapes serve as imperfections, their load factors are approximate" << std::endl;
     auto buckling = solve_linear_buckling<dim>(context, settings);
     auto &problem = *buckling.model.problem;
     auto  modes   = add_buckling_factors(buckling.result, 0, q, root, buckling.eigen_seconds);
@@ -105,7 +106,10 @@ namespace compliant
         mode = modes[m.mode - 1];
         double       largest = 0;
         const double sign    = orientation(problem, mode, largest);
-        const double scale   = sign * m.amplitude / largest;
+        if (!(largest > 0))
+          throw InputError("case file '" + p.case_file + "', Geometry/Imperfection: buckling mode " +
+                           std::to_string(m.mode) + " has no displacement");
+        const double scale = sign * m.amplitude / largest;
         q["imperfection_amplitude_" + std::to_string(m.mode)] = m.amplitude;
         for (const auto &cell : problem.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())

@@ -59,9 +59,12 @@ namespace compliant
     check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
     check(KSPGetPC(ksp, &pc), "KSPGetPC");
     // K - sigma M is symmetric: MUMPS LDL^T, half the flops and memory of LU.
-    check(MatSetOption(static_cast<Mat>(stiffness), MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(symmetric)");
-    check(MatSetOption(static_cast<Mat>(mass), MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(symmetric)");
-    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+    if (settings.symmetric)
+      {
+        check(MatSetOption(static_cast<Mat>(stiffness), MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(symmetric)");
+        check(MatSetOption(static_cast<Mat>(mass), MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(symmetric)");
+      }
+    check(PCSetType(pc, settings.symmetric ? PCCHOLESKY : PCLU), "PCSetType");
     check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
     if (!settings.petsc_options.empty())
       check(PetscOptionsInsertString(nullptr, settings.petsc_options.c_str()),

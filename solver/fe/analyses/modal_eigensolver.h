@@ -23,6 +23,9 @@ namespace compliant
     // false: the second matrix is symmetric but indefinite (buckling: K x = lambda (-K_sigma) x),
     // solved as a general problem, and the vectors keep SLEPc's unit 2-norm.
     bool definite_second_matrix = true;
+    // Both matrices exactly symmetric: K - sigma M factored by LDL^T; false: LU (a 3D tangent with
+    // rigid boundaries is unsymmetric).
+    bool symmetric = true;
   };
 
   struct EigenResult

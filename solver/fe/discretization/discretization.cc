@@ -6,7 +6,9 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/mapping_q.h>
-#include <deal.II/fe/mapping_q_eulerian.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include "mesh/curved_simplex_mapping.h"
@@ -72,6 +74,41 @@ namespace compliant
           }
       shift.update_ghost_values();
     }
+
+    // The perfect mapping's support points (curved boundaries included) plus the shift there,
+    // cached. (deal.II 9.4's MappingQEulerian starts from the straight-sided cell.)
+    template <int dim>
+    struct PerfectMapping : MappingQ<dim>
+    {
+      using MappingQ<dim>::MappingQ;
+      using MappingQ<dim>::compute_mapping_support_points;
+    };
+
+    template <int dim>
+    std::unique_ptr<Mapping<dim>> shifted_mapping_of(const DoFHandler<dim> &dofs,
+                                                     const LinearAlgebra::distributed::Vector<double> &shift,
+                                                     const unsigned int degree)
+    {
+      const PerfectMapping<dim> perfect(degree);
+      // The mapping's support points in its (hierarchical) order: those of FE_Q on Gauss-Lobatto points.
+      const Quadrature<dim> support(FE_Q<dim>(QGaussLobatto<1>(degree + 1)).get_unit_support_points());
+      auto cache = std::make_unique<MappingQCache<dim>>(degree);
+      cache->initialize(dofs.get_triangulation(), [&](const typename Triangulation<dim>::cell_iterator &cell) {
+        auto points = perfect.compute_mapping_support_points(cell);
+        if (!cell->is_active() || !(cell->is_locally_owned() || cell->is_ghost()))
+          return points; // never assembled on this rank
+        const typename DoFHandler<dim>::active_cell_iterator dof_cell(&dofs.get_triangulation(), cell->level(),
+                                                                      cell->index(), &dofs);
+        FEValues<dim> values(perfect, dofs.get_fe(), support, update_values);
+        values.reinit(dof_cell);
+        std::vector<Tensor<1, dim>> shifts(support.size());
+        values[FEValuesExtractors::Vector(0)].get_function_values(shift, shifts);
+        for (unsigned int i = 0; i < points.size(); ++i)
+          points[i] += shifts[i];
+        return points;
+      });
+      return cache;
+    }
   } // namespace
 
   template <int dim>
@@ -102,13 +139,13 @@ namespace compliant
           fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
         if (imperfection)
           {
+            mapping.reset();
             imperfection_field = std::make_unique<ImperfectionField>(triangulation);
             imperfection_field->dofs.distribute_dofs(FESystem<dim>(FE_Q<dim>(imperfection->degree), dim));
             fill_shift(*imperfection, imperfection_field->dofs, imperfection_field->shift, communicator);
             perfect_mapping = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
-            mapping = std::make_unique<MappingQEulerian<dim, LinearAlgebra::distributed::Vector<double>>>(
-              std::max(mapping_degree(geometry.curved, degree), imperfection->degree), imperfection_field->dofs,
-              imperfection_field->shift);
+            mapping = shifted_mapping_of(imperfection_field->dofs, imperfection_field->shift,
+                                         std::max(mapping_degree(geometry.curved, degree), imperfection->degree));
           }
         else
           mapping = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
