@@ -1,7 +1,7 @@
 // The Newton tangent of the finite-strain problem against central differences of its residual,
 // for each law, the mixed formulation and a follower pressure, in 2D (plane strain and plane
 // stress) and 3D, at a state with large rotation and stretch. A consistent tangent agrees to
-// O(h^2) + round-off: the test asks for 1e-6 relative with h = 1e-6 (measured about 1e-9).
+// O(h^2) + round-off: the test asks for 1e-8 relative with h = 1e-6 (measured 2.8e-9 to 4.2e-9).
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 
@@ -69,7 +69,7 @@ namespace
   CaseParameters cantilever_case(const std::string &model_2d)
   {
     CaseParameters p;
-    p.model       = dim == 2 ? model_2d : "3d";
+    p.model       = dim == 3 ? Model::three_d : model_2d == "plane stress" ? Model::plane_stress : Model::plane_strain;
     p.dimension   = dim;
     p.mesh_file   = std::string(COMPLIANT_SOURCE_DIR) + "/meshes/cantilever_" + std::to_string(dim) + "d.geo";
     p.geometry_parameters = {{"L", 10}, {"H", 4}, {"ny", 2}};
@@ -162,8 +162,8 @@ TEST(FiniteStrainTangent, MatchesFiniteDifferences)
       const double error3 = check<3>(c.law, c.mixed, c.follower, 0.3);
       std::cout << c.law << (c.mixed ? " mixed" : "") << (c.follower.empty() ? "" : " follower")
                 << ": 2D " << error2 << ", 3D " << error3 << std::endl;
-      EXPECT_LT(error2, 1e-6) << c.law;
-      EXPECT_LT(error3, 1e-6) << c.law;
+      EXPECT_LT(error2, 1e-8) << c.law; // measured up to 4.2e-9 (the README: 3e-9 to 4.2e-9)
+      EXPECT_LT(error3, 1e-8) << c.law;
     }
 }
 
@@ -179,8 +179,8 @@ TEST(FiniteStrainTangent, PlaneStressMatchesFiniteDifferences)
       // which depends on the in-plane strain through S33 = 0: its derivative is in the tangent.
       const double error_follower = check<2>(law, false, "right: 2 + 0.5*y", 0.3, "plane stress");
       std::cout << law << " plane stress: " << error << ", with a follower pressure " << error_follower << std::endl;
-      EXPECT_LT(error, 1e-6) << law;
-      EXPECT_LT(error_follower, 1e-6) << law;
+      EXPECT_LT(error, 1e-8) << law;
+      EXPECT_LT(error_follower, 1e-8) << law;
     }
 }
 

@@ -75,7 +75,7 @@ namespace compliant
     const bool  root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
     if (root)
       std::cout << "Mesh: " << n_cells << " cells, " << n_dofs << " DoFs (degree "
-                << p.element_degree << ", " << p.model << description << ") on "
+                << p.element_degree << ", " << to_string(p.model) << description << ") on "
                 << dealii::Utilities::MPI::n_mpi_processes(context.communicator) << " ranks"
                 << std::endl;
     if (context.check_only && root)
@@ -89,7 +89,7 @@ namespace compliant
     RunSummary  summary;
     summary.case_file  = p.case_file;
     summary.settings   = {{"analysis", p.analysis},
-                        {"model", p.model},
+                        {"model", to_string(p.model)},
                         {"mesh_file", p.mesh_file},
                         {"element_degree", std::to_string(p.element_degree)},
                         {"cell_type", hypercube_cells ? "hypercube" : "simplex"}};

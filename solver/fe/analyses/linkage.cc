@@ -21,7 +21,7 @@ namespace compliant
       MPI_Comm      comm = context.communicator;
       const bool    root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
       dealii::Timer timer;
-      if (p.formulation == "mixed")
+      if (p.formulation == Formulation::mixed)
         throw InputError("case file '" + p.case_file + "': Discretization/Formulation = mixed is for "
                          "linear static and modal analyses; the linkage analysis uses displacement elements");
       LinearElasticProblem<dim>         problem(p, context.geometry, comm,

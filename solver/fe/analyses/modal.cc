@@ -80,6 +80,41 @@ namespace compliant
       return dealii::Utilities::MPI::max(largest, comm);
     }
 
+    // Frequencies and effective modal masses (Chopra, Dynamics of Structures, sec. 13.2.5): with
+    // x^T M x = 1, Gamma_d = x^T M r_d, m_eff = Gamma_d^2; over all modes it sums to r_d^T M r_d
+    // (the mass that is not on supports). q holds total_mass already.
+    template <int dim>
+    void add_frequencies_and_effective_masses(const LinearElasticProblem<dim>                &problem,
+                                              const dealii::PETScWrappers::MPI::SparseMatrix &mass,
+                                              const EigenResult &result, std::map<std::string, double> &q)
+    {
+      const double two_pi = 2 * M_PI;
+      std::vector<dealii::PETScWrappers::MPI::Vector> m_r;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          m_r.emplace_back(problem.locally_owned_dofs, problem.communicator);
+          mass.vmult(m_r.back(), translation(problem, d));
+        }
+      std::vector<double> fraction_sum(dim, 0.);
+      for (unsigned int n = 0; n < result.eigenvalues.size(); ++n)
+        {
+          const double lambda = result.eigenvalues[n];
+          const std::string id = std::to_string(n + 1);
+          // A rigid-body mode may come out slightly negative: keep the sign visible.
+          q["frequency_" + id] = std::copysign(std::sqrt(std::abs(lambda)), lambda) / two_pi;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double gamma = result.eigenvectors[n] * m_r[d];
+              const double m_eff = gamma * gamma;
+              q["effective_mass_" + std::string(axis_name[d]) + "_" + id]          = m_eff;
+              q["effective_mass_fraction_" + std::string(axis_name[d]) + "_" + id] = m_eff / q["total_mass"];
+              fraction_sum[d] += m_eff / q["total_mass"];
+            }
+        }
+      for (unsigned int d = 0; d < dim; ++d)
+        q["effective_mass_fraction_" + std::string(axis_name[d]) + "_sum"] = fraction_sum[d];
+    }
+
     template <int dim>
     int run(const RunContext &context)
     {
@@ -173,33 +208,7 @@ namespace compliant
         worst_error = std::max(worst_error, e);
       q["eigen_backward_error_max"] = worst_error;
 
-      // Effective modal mass (Chopra, Dynamics of Structures, sec. 13.2.5): with x^T M x = 1,
-      // Gamma_d = x^T M r_d, m_eff = Gamma_d^2; over all modes it sums to r_d^T M r_d (the mass
-      // that is not on supports).
-      std::vector<dealii::PETScWrappers::MPI::Vector> m_r;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          m_r.emplace_back(problem.locally_owned_dofs, comm);
-          mass.vmult(m_r.back(), translation(problem, d));
-        }
-      std::vector<double> fraction_sum(dim, 0.);
-      for (unsigned int n = 0; n < result.eigenvalues.size(); ++n)
-        {
-          const double lambda = result.eigenvalues[n];
-          const std::string id = std::to_string(n + 1);
-          // A rigid-body mode may come out slightly negative: keep the sign visible.
-          q["frequency_" + id] = std::copysign(std::sqrt(std::abs(lambda)), lambda) / two_pi;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const double gamma = result.eigenvectors[n] * m_r[d];
-              const double m_eff = gamma * gamma;
-              q["effective_mass_" + std::string(axis_name[d]) + "_" + id]          = m_eff;
-              q["effective_mass_fraction_" + std::string(axis_name[d]) + "_" + id] = m_eff / q["total_mass"];
-              fraction_sum[d] += m_eff / q["total_mass"];
-            }
-        }
-      for (unsigned int d = 0; d < dim; ++d)
-        q["effective_mass_fraction_" + std::string(axis_name[d]) + "_sum"] = fraction_sum[d];
+      add_frequencies_and_effective_masses(problem, mass, result, q);
       q["time_setup"]      = problem.statistics.setup_seconds;
       q["time_assembly"]   = problem.statistics.assembly_seconds + mass_seconds;
       q["time_eigensolve"] = eigen_seconds;

@@ -29,7 +29,7 @@ namespace compliant
     , triangulation(*triangulation_storage)
     , dof_handler(triangulation)
     , thickness(dim == 2 ? parameters.thickness : 1.0)
-    , plane_stress(dim == 2 && parameters.model == "plane stress")
+    , plane_stress(dim == 2 && parameters.model == Model::plane_stress)
   {}
 
   template <int dim>
@@ -115,7 +115,7 @@ namespace compliant
   void Discretization<dim>::check_mesh_dimension() const
   {
     if (geometry.dimension != dim)
-      throw std::invalid_argument("Model = " + parameters.model + " needs a " + std::to_string(dim) +
+      throw std::invalid_argument("Model = " + std::string(to_string(parameters.model)) + " needs a " + std::to_string(dim) +
                                   "D mesh, but '" + parameters.mesh_file + "' is " +
                                   std::to_string(geometry.dimension) + "D");
   }

@@ -98,71 +98,12 @@ namespace compliant
   }
 
   template <int dim>
-  void LinearElasticProblem<dim>::choose_solver_method()
-  {
-    const std::string &requested = parameters.solver_method;
-    const bool hexahedra = triangulation.all_reference_cells_are_hyper_cube();
-    const bool matrix_free_possible = hexahedra && matrix_free_allowed && rigid_boundaries.empty();
-    std::string why_not;
-    if (!hexahedra)
-      why_not = "the matrix-free operator needs quadrilateral/hexahedral cells";
-    else if (!rigid_boundaries.empty())
-      why_not = "a rigid boundary ties its nodes together (the multigrid levels cannot)";
-    else if (!matrix_free_allowed)
-      why_not = "this analysis needs the assembled stiffness matrix";
-    solver_note.clear();
-    if (mixed)
-      {
-        // The u-p system is a symmetric saddle point: neither the matrix-free elasticity operator
-        // nor CG applies.
-        solver_method = "direct";
-        if (requested != "direct" && requested != "auto")
-          solver_note = requested + " requested, but the mixed u-p system is indefinite: using MUMPS (direct)";
-        else if (requested == "auto")
-          solver_note = "auto: MUMPS for the mixed u-p (saddle-point) system";
-        return;
-      }
-    if (requested == "matrix-free")
-      {
-        solver_method = matrix_free_possible ? "matrix-free" : "cg-amg";
-        if (!matrix_free_possible)
-          solver_note = "matrix-free requested, but " + why_not + ": using cg-amg";
-      }
-    else if (requested == "auto")
-      {
-        // Measured (cases/benchmarks): p-multigrid is fastest for degree >= 2 on hexahedra; below
-        // ~3e4 DoFs MUMPS costs less than any set-up; otherwise AMG on the assembled matrix.
-        if (matrix_free_possible && parameters.element_degree >= 2)
-          solver_method = "matrix-free",
-          solver_note   = "auto: matrix-free p-multigrid (degree " +
-                        std::to_string(parameters.element_degree) + " to 1, AMG on degree 1)";
-        else if (dof_handler.n_dofs() < 30000)
-          solver_method = "direct", solver_note = "auto: MUMPS for a small system";
-        else
-          solver_method = "cg-amg",
-          solver_note   = "auto: CG + GAMG on the assembled matrix" +
-                        (why_not.empty() ? std::string(" (degree 1)") : " (" + why_not + ")");
-      }
-    else
-      solver_method = requested;
-  }
-
-  template <int dim>
-  void LinearElasticProblem<dim>::require_assembled_matrix(const std::string &reason)
-  {
-    if (solver_method != "matrix-free")
-      return;
-    solver_method = "cg-amg";
-    solver_note   = "matrix-free not possible with " + reason + ": using cg-amg";
-  }
-
-  template <int dim>
   void LinearElasticProblem<dim>::setup_discretization()
   {
     this->check_mesh_dimension();
     this->create_mesh();
     this->choose_element(false);
-    mixed = parameters.formulation == "mixed";
+    mixed = parameters.formulation == Formulation::mixed;
     if (mixed)
       {
         if (plane_stress)
@@ -289,10 +230,10 @@ namespace compliant
   {
     const double mu     = material.shear_modulus();
     double       lambda = material.lame_lambda();
-    if (dim == 2 && parameters.model == "plane stress")
+    if (dim == 2 && parameters.model == Model::plane_stress)
       lambda = 2 * lambda * mu / (lambda + 2 * mu);
     const double trace = dealii::trace(strain);
-    sigma_zz = (dim == 2 && parameters.model == "plane strain") ? material.lame_lambda() * trace : 0;
+    sigma_zz = (dim == 2 && parameters.model == Model::plane_strain) ? material.lame_lambda() * trace : 0;
     return lambda * trace * unit_symmetric_tensor<dim>() + 2 * mu * strain;
   }
 
@@ -467,107 +408,6 @@ namespace compliant
     statistics.assembly_seconds = timer.wall_time();
   }
 
-
-  template <int dim>
-  void LinearElasticProblem<dim>::solve()
-  {
-    Timer                      timer;
-    PETScWrappers::MPI::Vector x(locally_owned_dofs, communicator);
-    if (solver_method == "matrix-free" && !solve_matrix_free(x))
-      {
-        // 'auto' only: the iterative method struggled (very thin cells); MUMPS is exact.
-        solver_method = "direct";
-        allocate_matrix();
-        assemble();
-      }
-    if (solver_method != "matrix-free")
-      {
-        const bool iterative = solver_method != "direct";
-        const auto modes     = iterative ? rigid_body_modes(*mapping, dof_handler, communicator) :
-                                           std::vector<PETScWrappers::MPI::Vector>();
-        LinearSolverSettings settings{solver_method, parameters.solver_tolerance,
-                                      parameters.solver_max_iterations, parameters.petsc_options};
-        if (parameters.solver_method == "auto" && iterative)
-          settings.max_iterations = std::min(settings.max_iterations, 300u);
-        try
-          {
-            statistics.iterations =
-              solve_linear_system(system_matrix, x, system_rhs, modes, settings, dim);
-          }
-        catch (const std::runtime_error &e)
-          {
-            if (parameters.solver_method != "auto" || !iterative)
-              throw;
-            solver_note += "; CG + GAMG did not converge in " +
-                           std::to_string(settings.max_iterations) +
-                           " iterations: solved again with MUMPS (direct)";
-            solver_method = "direct";
-            settings.method = "direct";
-            statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, {}, settings);
-          }
-      }
-    constraints.distribute(x);
-    solution = x;
-    statistics.solve_seconds = timer.wall_time();
-  }
-
-  template <int dim>
-  bool LinearElasticProblem<dim>::solve_matrix_free(PETScWrappers::MPI::Vector &x)
-  {
-    fast_solver::PMultigridSettings settings;
-    settings.relative_tolerance = parameters.solver_tolerance;
-    settings.max_iterations     = parameters.solver_method == "auto" ?
-                                    std::min(parameters.solver_max_iterations, 300u) :
-                                    parameters.solver_max_iterations;
-    settings.petsc_options      = parameters.petsc_options;
-    const bool plane_stress     = dim == 2 && parameters.model == "plane stress";
-    const auto lame = [&](const types::material_id id) {
-      const Material &material = materials.at(id);
-      const double    mu       = material.shear_modulus();
-      double          lambda   = material.lame_lambda();
-      if (plane_stress)
-        lambda = 2 * lambda * mu / (lambda + 2 * mu);
-      return std::make_pair(lambda * thickness, mu * thickness);
-    };
-    using Operator = fast_solver::ElasticityOperator<dim, double>;
-    fast_solver::PMultigridSolver<dim, Operator> solver(
-      *mapping, dof_handler,
-      [this](const DoFHandler<dim> &dofs, AffineConstraints<double> &level_constraints) {
-        add_support_constraints(dofs, level_constraints, true);
-      },
-      [&lame](Operator &level_operator, const Mapping<dim> &level_mapping,
-              const DoFHandler<dim> &dofs, const AffineConstraints<double> &level_constraints) {
-        level_operator.reinit(level_mapping, dofs, level_constraints, lame);
-      },
-      settings, communicator);
-    statistics.preconditioner_setup_seconds = solver.statistics().setup_seconds;
-    statistics.level_dofs.assign(solver.statistics().level_dofs.begin(),
-                                 solver.statistics().level_dofs.end());
-    {
-      const auto       &s = solver.statistics();
-      std::ostringstream note;
-      note << "largest cell aspect ratio " << std::setprecision(3) << s.largest_aspect_ratio
-           << ": Chebyshev degree " << s.smoothing_degree << " over range " << s.smoothing_range
-           << ", degree-1 level by " << (s.coarse_direct ? "MUMPS" : "GAMG");
-      statistics.multigrid_note = note.str();
-    }
-    try
-      {
-        statistics.iterations = solver.solve(system_rhs, constraints, x);
-        statistics.coarse_iterations = solver.statistics().coarse_iterations;
-      }
-    catch (const SolverControl::NoConvergence &e)
-      {
-        const std::string what = "matrix-free p-multigrid did not converge in " +
-                                 std::to_string(e.last_step) + " iterations (residual " +
-                                 std::to_string(e.last_residual) + ")";
-        if (parameters.solver_method != "auto")
-          throw std::runtime_error(what + "; try 'Linear solver/Method = direct' or more iterations");
-        solver_note += "; " + what + ": solved again with MUMPS (direct)";
-        return false;
-      }
-    return true;
-  }
 
   template <int dim>
   SymmetricTensor<2, dim> LinearElasticProblem<dim>::cauchy_stress(const Tensor<2, dim> &grad_u,

@@ -14,6 +14,16 @@
 
 namespace compliant
 {
+  const char *to_string(const Model model)
+  {
+    return model == Model::three_d ? "3d" : model == Model::plane_strain ? "plane strain" : "plane stress";
+  }
+
+  const char *to_string(const Formulation formulation)
+  {
+    return formulation == Formulation::mixed ? "mixed" : "displacement";
+  }
+
   using dealii::ParameterHandler;
   namespace Patterns = dealii::Patterns;
 
@@ -505,15 +515,16 @@ namespace compliant
       throw InputError("case file '" + p.case_file + "', Geometry/Imperfection: an imperfection shapes the "
                        "path of a nonlinear static analysis, not a " + p.analysis + " analysis");
 
-    p.model     = prm.get("Model");
-    p.dimension = p.model == "3d" ? 3 : 2;
+    const std::string model = prm.get("Model");
+    p.model     = model == "3d" ? Model::three_d : model == "plane strain" ? Model::plane_strain : Model::plane_stress;
+    p.dimension = p.model == Model::three_d ? 3 : 2;
 
     prm.enter_subsection("Discretization");
     p.element_degree     = prm.get_integer("Element degree");
     p.global_refinements = prm.get_integer("Global refinements");
     p.mesh_partition     = prm.get("Mesh partition");
     p.curved_boundaries  = prm.get_bool("Curved boundaries");
-    p.formulation        = prm.get("Formulation");
+    p.formulation        = prm.get("Formulation") == "mixed" ? Formulation::mixed : Formulation::displacement;
     prm.leave_subsection();
 
     prm.enter_subsection("Material");

@@ -20,11 +20,28 @@ namespace compliant
     using std::runtime_error::runtime_error;
   };
 
+  // Model = ...: the case file's words are to_string's.
+  enum class Model
+  {
+    plane_stress,
+    plane_strain,
+    three_d
+  };
+  const char *to_string(Model model);
+
+  // Discretization/Formulation = ... (linear analyses).
+  enum class Formulation
+  {
+    displacement,
+    mixed // Q_p displacement with a discontinuous P_(p-1) pressure
+  };
+  const char *to_string(Formulation formulation);
+
   struct CaseParameters
   {
     std::string              case_file;
     std::vector<std::string> overrides; // the --set entries it was read with, "Section/Name=value"
-    std::string model; // "plane stress", "plane strain", "3d"
+    Model       model = Model::plane_stress;
     int         dimension = 2;
     std::string analysis;
 
@@ -36,7 +53,7 @@ namespace compliant
     unsigned int global_refinements = 0;
     std::string  mesh_partition     = "auto"; // auto, shared, distributed
     bool         curved_boundaries  = true;   // circles, cylinders, spheres follow the geometry
-    std::string  formulation        = "displacement"; // linear analyses: displacement or mixed
+    Formulation  formulation        = Formulation::displacement; // linear analyses
     // Local refinements after the global ones, one set of refine flags (per active cell) per
     // cycle: set by the model ladder's adaptive rungs, never read from the case file.
     std::vector<std::vector<bool>> adaptive_refinements;

@@ -17,21 +17,13 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include "analyses/analysis.h"
+#include "ladder/ladder_row.h"
 
 #include <string>
 #include <vector>
 
 namespace compliant
 {
-  // One rung's line of ladder.csv without its number and cumulative time: the columns before
-  // (model ... seconds) and after (values and estimates) them.
-  struct LadderRow
-  {
-    std::string head;
-    double      seconds = 0;
-    std::string tail;
-  };
-
   struct TargetSettings
   {
     double                   relative_error = 0; // fraction (the case gives percent)

@@ -125,8 +125,8 @@ namespace compliant
                        "D model like the case itself; expected the " + (primary.dimension == 3 ? "2D" : "3D") +
                        " model of the same part");
     const auto &plane = primary.dimension == 2 ? primary : q;
-    if (plane.model != "plane stress")
-      throw InputError(where + ": the 2D model ('" + plane.case_file + "') has Model = " + plane.model +
+    if (plane.model != Model::plane_stress)
+      throw InputError(where + ": the 2D model ('" + plane.case_file + "') has Model = " + std::string(to_string(plane.model)) +
                        "; expected plane stress (the out-of-plane bound that justifies 2D exists for "
                        "plane stress only)");
     q.output_directory = primary.output_directory;
