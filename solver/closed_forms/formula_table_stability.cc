@@ -1,6 +1,7 @@
 // Closed forms of stability: columns, flexures under axial load, bistable beams.
 #include "bistable.h"
 #include "formula_helpers.h"
+#include "plates.h"
 
 namespace closed_forms
 {
@@ -84,6 +85,44 @@ namespace closed_forms
            warn_if(r, ratio > 0.3, "b/h = " + number(ratio) + " > 0.3: not a narrow strip; the curvature before "
                                      "buckling raises M_cr by " + number(100 * (1 / std::sqrt(1 - ratio * ratio) - 1)) +
                                      " % or more");
+           return r;
+         }});
+
+      table.push_back(
+        {"plate_buckling_stress",
+         "uniform compressive stress along a that buckles a rectangular plate simply supported on all four "
+         "edges into m half-waves along a and n across b, (pi^2 D / (b^2 t)) (m b/a + n^2 a/(m b))^2, "
+         "D = E t^3 / 12 (1 - nu^2) (stress)",
+         "Timoshenko and Gere, Theory of Elastic Stability, sec. 9.2",
+         {positive("a", "plate length along the load"), positive("b", "plate width across the load"),
+          positive("t", "plate thickness"), modulus_E(), poisson_nu(),
+          optional_positive("m", "half-waves along the load", 1), optional_positive("n", "half-waves across it", 1)},
+         [](const Args &p) {
+           const double a = p.at("a"), b = p.at("b"), t = p.at("t"), m = p.at("m"), n = p.at("n");
+           Result r{plate_buckling_stress(a, b, t, p.at("E"), p.at("nu"), m, n), {}};
+           const double shear = plate_buckling_shear_share(a, b, t, p.at("E"), p.at("nu"), m, n);
+           warn_if(r, shear > 0.01, "transverse shear lowers this mode's stress by " +
+                                      number(100 * shear / (1 + shear)) + " % (Mindlin): a thick plate for it");
+           warn_if(r, std::min(a, b) / t < 20, "min(a, b)/t = " + number(std::min(a, b) / t) +
+                                                 " < 20: not a thin plate");
+           return r;
+         }});
+
+      table.push_back(
+        {"plate_buckling_stress_mindlin",
+         "the same with transverse shear (Mindlin's simply supported plate): the Kirchhoff stress / (1 + "
+         "pi^2 D ((m/a)^2 + (n/b)^2) / (kappa G t)) (stress)",
+         "Timoshenko and Gere, sec. 9.2; shear: Mindlin, J. Appl. Mech. 18:31 (1951), simply supported case",
+         {positive("a", "plate length along the load"), positive("b", "plate width across the load"),
+          positive("t", "plate thickness"), modulus_E(), poisson_nu(),
+          optional_positive("m", "half-waves along the load", 1), optional_positive("n", "half-waves across it", 1),
+          optional_positive("kappa", "shear correction factor", 5.0 / 6.0)},
+         [](const Args &p) {
+           const double a = p.at("a"), b = p.at("b"), t = p.at("t"), m = p.at("m"), n = p.at("n");
+           const double shear = plate_buckling_shear_share(a, b, t, p.at("E"), p.at("nu"), m, n, p.at("kappa"));
+           Result r{plate_buckling_stress(a, b, t, p.at("E"), p.at("nu"), m, n) / (1 + shear), {}};
+           warn_if(r, std::min(a / m, b / n) / t < 5,
+                   "a half-wave shorter than 5 thicknesses: beyond plate theory");
            return r;
          }});
 

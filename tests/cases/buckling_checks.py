@@ -5,6 +5,7 @@
     buckling_checks.py column3d CASE   3D column (L = 200): weak-axis and strong-axis first modes
     buckling_checks.py ranks    CASE   1 and 2 ranks give the same factors
     buckling_checks.py tension  CASE   the load reversed: factors change sign (the part is pulled)
+    buckling_checks.py plate    CASE   a simply supported square plate: the first four doubly symmetric modes
 
 Reference: Euler's load with Engesser's shear correction P = P_E / (1 + P_E / (kappa G A)), kappa =
 5/6 (Timoshenko and Gere, Theory of Elastic Stability, sec. 2.18). The Q2 columns are converged in
@@ -14,7 +15,8 @@ itself is 4 %, and the plane-stress continuum lies 1.0 % below Engesser's first-
 Each README figure is also asserted to 3 units of its last stated digit (issue 34): 2D modes 1-3
 +0.019 / -0.33 / -0.98 %, 3D weak and strong axis +0.25 / +0.13 %, the strip -0.007 %, about the
 column's finite-strain state 514.43 (+0.24 %), linear buckling +0.02 %; on the arch linear buckling
-0.053, about the states at 0.03 and 0.033 0.0320 and 0.03333, the limit point 0.033429 (-0.28 %).
+0.053, about the states at 0.03 and 0.033 0.0320 and 0.03333, the limit point 0.033429 (-0.28 %), and
+load control stopping between 0.033 and 0.037; the 2D column's mesh study 513.42, 513.31, 513.28.
 """
 import math
 import os
@@ -55,6 +57,11 @@ if mode == "column2d":
     q = run_case(case)["quantities"]
     for n, bar, figure, tolerance in ((1, 0.005, 0.00019, 0.00003), (2, 0.005, -0.0033, 0.0003), (3, 0.015, -0.0098, 0.0003)):
         compare(q, "buckling_factor_%d" % n, column_load(n, H ** 3 / 12, H, 100.0), bar, "mode %d" % n, figure, tolerance)
+    # README: converged in the mesh, ny = 2, 4 (the case's own), 8 give 513.42, 513.31, 513.28
+    for ny, figure in ((2, 513.42), (4, None), (8, 513.28)):
+        factor = q["buckling_factor_1"] if figure is None else \
+            run_case(case, ["Geometry/Parameters/ny=%d" % ny])["quantities"]["buckling_factor_1"]
+        readme_value(factor, figure or 513.31, 0.03, "mode 1 at ny = %d" % ny)
 elif mode == "column3d":
     H, W = 10.0, 5.0
     q = run_case(case)["quantities"]
@@ -73,7 +80,7 @@ elif mode == "tension":
     check(abs(pulled / compressed + 1) < 1e-8, "reversing the load reverses the factor's sign")
 elif mode == "strip":
     # Lateral-torsional buckling of a narrow strip (H/W = 10, span 200, fork ends) against
-    # (pi/L) sqrt(E I_y G J), the issue's bar 2 %; measured -0.007 % (converged +0.11 %).
+    # (pi/L) sqrt(E I_y G J), the issue's bar 2 %; measured -0.007 % (16 x 4 x 80 cells: -0.071 %).
     q = run_case(case)
     c = next(c for c in q["comparisons"] if c["closed_form"] == "lateral_torsional_buckling_moment")
     print("critical moment %.6g, closed form %.6g" % (c["computed"], c["reference"]))
@@ -92,6 +99,9 @@ elif mode == "column_state":
     state = run_case(case, sets + ["Buckling/Reference load factor=256"])["quantities"]
     compare(state, "buckling_factor_1", column_load(1, H ** 3 / 12, H, 100.0), 0.005, "about the state at 256", 0.0024, 0.0003)
     readme_value(state["buckling_factor_1"], 514.43, 0.03, "about the state at 256")
+    for reference, figure in ((128, 514.46), (384, 514.41)):  # README: "514.46 and 514.41 at 128 and 384"
+        other = run_case(case, sets + ["Buckling/Reference load factor=%d" % reference])["quantities"]
+        readme_value(other["buckling_factor_1"], figure, 0.03, "about the state at %d" % reference)
     linear = run_case(case, sets)["quantities"]["buckling_factor_1"]
     check(abs(linear / column_load(1, H ** 3 / 12, H, 100.0) - 1 - 0.0002) <= 0.0003,
           "linear buckling %+.3f %% from Engesser's load, the README's +0.02 %% (+- 0.03 %%)"
@@ -119,6 +129,42 @@ elif mode == "arch_state":
     readme_value(near["buckling_factor_1"], 0.03333, 0.00003, "about the state at 0.033")
     check(abs(near["buckling_factor_1"] / arc - 1 + 0.0028) <= 0.0003, "about the state at 0.033: %+.3f %% from the "
           "limit point, the README's -0.28 %% (+- 0.03 %%)" % (100 * (near["buckling_factor_1"] / arc - 1)))
+    # README: "load control stops at 0.033-0.037": the last converged step and the step that failed.
+    import re
+    import subprocess
+    import tempfile
+    from study import mpi_env, solver_path
+    out = tempfile.mkdtemp(prefix="compliant-arch-")
+    p = subprocess.run(["mpirun", "-np", "2", solver_path(), case, "--set", "Output/Directory=" + out],
+                       capture_output=True, text=True, env=mpi_env())
+    subprocess.run(["rm", "-rf", out])
+    stop = re.search(r"stopped at load factor ([0-9.]+) \(last converged step\): the step to ([0-9.]+) failed", p.stderr)
+    if check(p.returncode == 3 and stop is not None, "load control stops and says where (exit %d)" % p.returncode):
+        readme_value(float(stop.group(1)), 0.033, 0.003, "load control: last converged load factor")
+        readme_value(float(stop.group(2)), 0.037, 0.003, "load control: the step that failed")
+elif mode == "plate":
+    # Square plate a = b = 100, t = 1, simply supported, uniform compression (a quarter, 16 x 16 x 1 Q2).
+    # References written out here, not taken from the solver: Kirchhoff, sigma = k pi^2 D / (b^2 t) with
+    # k = (m + n^2/m)^2 (Timoshenko and Gere, sec. 9.2), and Mindlin's simply supported plate, which
+    # divides it by 1 + pi^2 D ((m/a)^2 + (n/b)^2) / (kappa G t). Bars: the first mode 0.1 % of both (the
+    # shear share is 0.056 %); the higher modes 0.5 %, (5, 1) 1 %: its half-wave is 20 cells of 3 here,
+    # and it converges from above (32 x 32 x 2: -0.10 % from Mindlin's).
+    a = b = 100.0
+    t, E_p, nu_p = 1.0, 1000.0, 0.3
+    D = E_p * t ** 3 / (12 * (1 - nu_p ** 2))
+    G_p = E_p / (2 * (1 + nu_p))
+
+    def plate(m, n, shear):
+        kirchhoff = (m + n * n / m) ** 2 * math.pi ** 2 * D / (b ** 2 * t)
+        share = math.pi ** 2 * D * ((m / a) ** 2 + (n / b) ** 2) / (kappa * G_p * t) if shear else 0
+        return kirchhoff / (1 + share)
+
+    q = run_case(case)["quantities"]
+    compare(q, "buckling_factor_1", plate(1, 1, False), 0.001, "mode (1, 1) against Kirchhoff's k = 4", -0.00046, 0.00003)
+    for k, (m, n, bar, figure) in enumerate(((1, 1, 0.001, 0.00011), (3, 1, 0.005, 0.0022), (5, 1, 0.01, 0.0073),
+                                              (3, 3, 0.005, 0.0010)), start=1):
+        compare(q, "buckling_factor_%d" % k, plate(m, n, True), bar, "mode (%d, %d) against Mindlin's" % (m, n),
+                figure, 0.0003 if k > 1 else 0.00003)
 else:
     sys.exit("FAIL unknown mode " + mode)
 finish()

@@ -1,4 +1,5 @@
 #include "analyses/buckling.h"
+#include "elasticity/global_constraints.h"
 #include "analyses/buckling_parts.h"
 
 #include <deal.II/base/timer.h>
@@ -134,6 +135,15 @@ namespace compliant
   void distribute_support_constraints(const LinearElasticProblem<dim>                 &problem,
                                       std::vector<dealii::PETScWrappers::MPI::Vector> &modes)
   {
+    if (problem.constraints_gathered)
+      {
+        // Extra constraints tie DoFs across ranks: their whole set, without prescribed values.
+        auto homogeneous = gather_constraints(problem, true);
+        homogeneous.close();
+        for (auto &mode : modes)
+          homogeneous.distribute(mode);
+        return;
+      }
     dealii::AffineConstraints<double> homogeneous;
     homogeneous.reinit(problem.locally_relevant_dofs);
     problem.add_support_constraints(problem.dof_handler, homogeneous, true);

@@ -1,5 +1,8 @@
 #include "analyses/linear_static_model.h"
 
+#include "constraints/extra_constraints.h"
+#include "elasticity/global_constraints.h"
+
 #include <deal.II/base/timer.h>
 
 #include <iostream>
@@ -14,9 +17,14 @@ namespace compliant
     const bool             root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
     dealii::Timer          timer;
     LinearStaticModel<dim> model;
+    dealii::AffineConstraints<double> extended; // the supports' constraints and the extra ones
+    // Pins, mirror ties and edge supports tie DoFs of any two places: gathered on every rank.
+    const ExtraConstraints extra = read_extra_constraints(context.prm);
     // Refine flags from the model ladder's adaptive rungs are over the whole mesh.
     const auto partition = choose_mesh_partition(
-      context, p, p.adaptive_refinements.empty() ? "" : "adaptive refinement (Target/Refinement)");
+      context, p, !extra.empty()                  ? "Extra constraints (gathered on every rank)" :
+                  !p.adaptive_refinements.empty() ? "adaptive refinement (Target/Refinement)" :
+                                                    "");
     model.problem = std::make_unique<LinearElasticProblem<dim>>(p, context.geometry, comm, partition);
     auto &problem      = *model.problem;
     problem.matrix_free_allowed = !keep_matrix; // one solve of K u = f: no stored matrix needed
@@ -25,6 +33,11 @@ namespace compliant
         parse_checks(p.checks);
         problem.setup();
         validate_quantity_requests(problem);
+        if (!extra.empty())
+          {
+            extended = gather_constraints(problem, false);
+            add_extra_constraints(problem, extra, extended);
+          }
       }
     catch (const std::invalid_argument &e)
       {
@@ -41,6 +54,8 @@ namespace compliant
         return model;
       }
 
+    if (!extra.empty())
+      install_constraints(problem, std::move(extended));
     try
       {
         problem.assemble(); // load expressions are evaluated here

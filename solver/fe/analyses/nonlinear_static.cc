@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include "constraints/extra_constraints.h"
 #include "finite_strain/finite_strain_load_path.h"
 #include "finite_strain/finite_strain_problem.h"
 #include "nonlinear/load_stepping.h"
@@ -233,6 +234,11 @@ namespace compliant
 
   PathSettings read_path_settings(dealii::ParameterHandler &prm, const CaseParameters &p, const int dim)
   {
+    // The finite-strain problem does not hold pins, ties or edge supports yet: never drop them.
+    if (!read_extra_constraints(prm).empty())
+      throw InputError("case file '" + p.case_file + "', Extra constraints: pins, mirror ties and edge supports "
+                       "are held by linear static, linear buckling, modal and linkage analyses, not at finite "
+                       "strain (nonlinear static, buckling about a finite-strain state)");
     PathSettings s;
     prm.enter_subsection("Finite strain");
     s.finite_strain.law                   = prm.get("Law");

@@ -42,6 +42,7 @@ namespace compliant
     constraints.close();
     problem.require_assembled_matrix("pins, mirror ties or edge supports");
     problem.constraints = std::move(constraints);
+    problem.constraints_gathered = true;
     const auto             n_dofs = problem.dof_handler.n_dofs();
     DynamicSparsityPattern dsp(n_dofs, n_dofs);
     DoFTools::make_sparsity_pattern(problem.dof_handler, dsp, problem.constraints, false);

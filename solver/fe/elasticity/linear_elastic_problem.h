@@ -81,6 +81,9 @@ namespace compliant
     // Everything the quantities and the output read, beyond the discretization: the support
     // constraints (hanging nodes included).
     dealii::AffineConstraints<double>           constraints;
+    // install_constraints (elasticity/global_constraints.h) replaced them by the whole set on
+    // every rank, extra constraints (pins, ties, edge supports) included.
+    bool constraints_gathered = false;
     // Boundary conditions/Rigid, linearised about the reference configuration.
     std::vector<RigidBoundary<dim>>             rigid_boundaries;
     // Discretization/Formulation = mixed (the base's `mixed`): u-p with a discontinuous pressure,
