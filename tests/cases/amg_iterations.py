@@ -11,10 +11,11 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from study import run_case  # noqa: E402
 
 case = sys.argv[1]
-its = []
+its, dofs = [], []
 for ny in (8, 16, 32):
     q = run_case(case, ["Geometry/Parameters/ny=%d" % ny, "Linear solver/Method=cg-amg"])["quantities"]
     its.append(q["solver_iterations"])
+    dofs.append(q["n_dofs"])
     print("ny=%d  DoFs %d  CG+GAMG iterations %d" % (ny, q["n_dofs"], q["solver_iterations"]))
 jacobi = [run_case(case, ["Geometry/Parameters/ny=%d" % ny, "Linear solver/Method=cg-amg",
                           "Linear solver/PETSc options=-pc_type jacobi",
@@ -27,4 +28,7 @@ bounded = all(i <= f + 2 for i, f in zip(its, (24, 22, 24)))
 print("PASS" if bounded else "FAIL", "GAMG iterations %s at most the README's 24, 22, 24 plus two" % its)
 jacobi_ok = all(abs(j - f) <= 2 for j, f in zip(jacobi, (721, 1442)))
 print("PASS" if jacobi_ok else "FAIL", "Jacobi iterations %s are the README's 721, 1442 (+- 2)" % jacobi)
-sys.exit(0 if ok and bounded and jacobi_ok and len(its) == 3 else 1)
+# README: 5.5k, 21k, 83k DoFs, each to 3 units of its last digit (0.3k, 3k, 3k)
+dofs_ok = all(abs(n / 1000 - f) <= t for n, (f, t) in zip(dofs, ((5.5, 0.3), (21, 3), (83, 3))))
+print("PASS" if dofs_ok else "FAIL", "DoFs %s are the README's 5.5k, 21k, 83k" % dofs)
+sys.exit(0 if ok and bounded and jacobi_ok and dofs_ok and len(its) == 3 else 1)

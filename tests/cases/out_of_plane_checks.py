@@ -21,19 +21,21 @@ Across dimensions (Target/Paired model, ladder/paired_model.h), each against the
     3D part goes on to the 3D model the same way;
   - a pair that is not the same part (thickness 1 against W = 10) is refused: exit 2, a message
     naming Target/Paired model and both volumes, and no summary written.
-The README's table (plane stress, 3D solid, true gap, bound for W = 1, 10, 40) is asserted to 3 units
-of the last digit of each figure (issue 34).
+The README's tables (plane stress, 3D solid, true gap, bound for W = 1, 10, 40; the paired runs' bounds,
+rungs, DoFs and errors against the solid) are asserted to 3 units of the last digit of each figure
+(issue 34); the times in the cost column are not.
 """
 import csv
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "postproc"))
 from study import mpi_env, solver_path  # noqa: E402
-from case_checks import check, finish  # noqa: E402
+from case_checks import check, finish, readme_figure  # noqa: E402
 
 cases = sys.argv[1]
 
@@ -94,16 +96,34 @@ target = ["Target/Relative error=0.5"]
 pair_2d = "Target/Paired model=cantilever_2d.prm: Material/Thickness=W"
 proc, summary = run_any("cantilever_3d.prm", target + [pair_2d, "Geometry/Parameters/W=1", "Geometry/Parameters/nz=1"])
 q = summary["quantities"] if summary else {}
-u = q.get("mean_displacement_right_y", 0)
+# A missing summary or quantity fails here instead of reading as zero below.
+check(all(k in q for k in ("mean_displacement_right_y", "out_of_plane_bound", "mean_displacement_right_y_error_estimate",
+                           "mean_displacement_right_y_error_estimate_against_3d")),
+      "W = 1: summary.json with the displacement, the out-of-plane bound and both estimates")
+u = q.get("mean_displacement_right_y", float("nan"))
 error = abs(u - solid_reference[1]) / abs(solid_reference[1])
-allowed = q.get("out_of_plane_bound", 0) + q.get("mean_displacement_right_y_error_estimate", 0) + 6e-4
+allowed = q.get("out_of_plane_bound", float("nan")) + q.get("mean_displacement_right_y_error_estimate", float("nan")) + 6e-4
 print("W = 1, 3D case paired with plane stress: %s, %.8g, error against the solid %.3f %%, bound + estimate %.3f %%" % (
     summary["case"] if summary else "-", u, 100 * error, 100 * (allowed - 6e-4)))
 check(proc.returncode == 0 and summary["case"].endswith("cantilever_2d.prm"),
       "W = 1: the 3D case stops at its plane-stress model")
 check(error <= 0.005 and error <= allowed, "W = 1: the 2D answer is within the target and bound + estimate of the solid")
-check(abs(q.get("mean_displacement_right_y_error_estimate_against_3d", 0) - (allowed - 6e-4)) < 1e-12,
+check(abs(q.get("mean_displacement_right_y_error_estimate_against_3d", float("nan")) - (allowed - 6e-4)) < 1e-12,
       "W = 1: summary.json gives the error estimate against the 3D part, estimate + bound")
+# README: "2D: bound 0.13 %, 3 rungs to 21k DoFs | 0.110 % (bound + estimate 0.131 %)"
+readme_figure(q.get("out_of_plane_bound", float("nan")), "0.13", "W = 1 paired: bound in %", 100)
+check(q.get("ladder_rungs") == 3 and len(proc.ladder_rows) == 3, "W = 1 paired: 3 rungs (%s)" % q.get("ladder_rungs"))
+readme_figure(q.get("n_dofs", float("nan")), "21", "W = 1 paired: thousands of DoFs", 1e-3)
+readme_figure(error, "0.110", "W = 1 paired: error against the 3D solid in %", 100)
+readme_figure(allowed - 6e-4, "0.131", "W = 1 paired: bound + estimate in %", 100)
+
+# README: "the 3D ladder alone ... (41k DoFs, 0.028 %)", the error against the solid.
+proc, summary = run_any("cantilever_3d.prm", target + ["Geometry/Parameters/W=1", "Geometry/Parameters/nz=1"])
+q = summary["quantities"] if summary else {}
+check(proc.returncode == 0 and summary is not None, "W = 1: the 3D ladder alone runs")
+readme_figure(q.get("n_dofs", float("nan")), "41", "W = 1, 3D ladder alone: thousands of DoFs", 1e-3)
+readme_figure(abs(q.get("mean_displacement_right_y", float("nan")) - solid_reference[1]) / abs(solid_reference[1]),
+              "0.028", "W = 1, 3D ladder alone: error against the solid in %", 100)
 
 # A target below the first rung's bound (0.24 %) but above the converged one (0.13 %): the bound
 # tightens on the 2D rungs and 2D is kept.
@@ -114,6 +134,12 @@ error = abs(u - solid_reference[1]) / abs(solid_reference[1])
 print("W = 1, target 0.15 %%: %s, error against the solid %.3f %%" % (summary["case"] if summary else "-", 100 * error))
 check(proc.returncode == 0 and summary["case"].endswith("cantilever_2d.prm") and error <= 0.0015,
       "W = 1, target 0.15 %: the bound tightens below the target on finer 2D rungs, 2D kept and within 0.15 %")
+# README: "bound 0.24, 0.16, 0.13 % on the three 2D rungs | 0.110 %" (the bounds as the log prints them)
+bounds = re.findall(r"\|U_3D - U\| <= ([0-9.eE+-]+) % of U", proc.stdout)
+check(len(bounds) == 3, "W = 1, target 0.15 %%: the log gives a bound on each of three 2D rungs (%s)" % bounds)
+for b, figure in zip(bounds, ("0.24", "0.16", "0.13")):
+    readme_figure(float(b), figure, "W = 1, target 0.15 %: rung bound in %")
+readme_figure(error, "0.110", "W = 1, target 0.15 %: error against the 3D solid in %", 100)
 
 # The case's --set materials carry over to its pair: half the modulus, twice the deflection.
 proc, softer = run_any("cantilever_3d.prm", target + [pair_2d, "Geometry/Parameters/W=1", "Geometry/Parameters/nz=1",
@@ -131,6 +157,10 @@ check(proc.returncode == 0 and summary["case"].endswith("cantilever_3d.prm") and
       q.get("out_of_plane_bound", 0) > 0.005 and "ladder_dimension_check" in summary["settings"],
       "W = 10: the 3D case climbs its own model, with the plane-stress bound that sent it there")
 check(error <= 0.005, "W = 10: the 3D answer meets the target against the solid")
+# README: "3D: bound 2.9 % after one 2D rung (1458 DoFs) | 0.070 %"
+readme_figure(q.get("out_of_plane_bound", float("nan")), "2.9", "W = 10 paired: bound in %", 100)
+check([r["dofs"] for r in proc.ladder_rows[:1]] == ["1458"], "W = 10 paired: the one 2D rung has 1458 DoFs")
+readme_figure(error, "0.070", "W = 10 paired: error against the 3D solid in %", 100)
 models = [r["model"] for r in proc.ladder_rows]
 check(models[:1] == ["plane stress linear"] and len(models) == q.get("ladder_rungs") and "linear" in models[1:],
       "W = 10: ladder.csv and ladder_rungs hold the abandoned plane-stress rung and the 3D rungs (%s)" % models)
@@ -143,6 +173,9 @@ print("W = 40, plane-stress case paired with its 3D part: %s, error against the 
     summary["case"] if summary else "-", 100 * error))
 check(proc.returncode == 0 and summary["case"].endswith("cantilever_3d.prm") and error <= 0.005,
       "W = 40: the plane-stress case goes on to its 3D part and meets the target against the solid")
+# README: "3D: bound 9.9 % | 0.068 %"
+readme_figure(q.get("out_of_plane_bound", float("nan")), "9.9", "W = 40 paired: bound in %", 100)
+readme_figure(error, "0.068", "W = 40 paired: error against the 3D solid in %", 100)
 
 proc, summary = run_any("cantilever_3d.prm", target + ["Target/Paired model=cantilever_2d.prm"])
 check(proc.returncode == 2 and "Target/Paired model" in proc.stderr and "same part" in proc.stderr and summary is None,
