@@ -120,6 +120,31 @@ namespace closed_forms
     return EI / L * (P > 0 ? kL / std::tan(kL) : kL / std::tanh(kL));
   }
 
+  double
+  guided_beam_column_stiffness(const double L, const double E, const double b, const double h, const double P)
+  {
+    require_positive("L", L);
+    require_positive("E", E);
+    const double EI    = E * second_moment_of_area(b, h);
+    const double q     = std::sqrt(std::abs(P) / EI) * L;
+    const double scale = EI / (L * L * L);
+    if (q < 1e-3) // 12 (1 -+ q^2 / 10): the differences below lose digits
+      return scale * 12.0 * (1.0 - (P > 0 ? 1.0 : -1.0) * q * q / 10.0);
+    if (P > 0)
+      return scale * q * q * q * std::sin(q) / (2 * (1 - std::cos(q)) - q * std::sin(q));
+    return scale * q * q * q * std::sinh(q) / (q * std::sinh(q) - 2 * (std::cosh(q) - 1));
+  }
+
+  double
+  bcm_guided_stiffness(const double L, const double E, const double b, const double h, const double P)
+  {
+    require_positive("L", L);
+    require_positive("E", E);
+    const double EI = E * second_moment_of_area(b, h);
+    const double p  = -P * L * L / EI;
+    return EI / (L * L * L) * (12.0 + 1.2 * p - p * p / 700.0);
+  }
+
   // 1 + cos x cosh x = 0 is rewritten as cos x + 1/cosh x = 0 so that cosh never overflows. On
   // [(n-1) pi, n pi] cos x changes sign and 1/cosh x < 1 is too small to remove that change, so each
   // interval holds the n-th root.

@@ -51,6 +51,19 @@ namespace closed_forms
   // (kL = pi/2), negative beyond it (Timoshenko and Gere, Theory of Elastic Stability, sec. 1.5).
   double beam_column_end_moment_stiffness(double L, double E, double b, double h, double P);
 
+  // Transverse stiffness F / delta of a fixed-guided beam (one end clamped, the other translating
+  // sideways without turning: a blade of a parallel-guided flexure) under an axial force P that keeps
+  // its direction, P > 0 compressive, q = L sqrt(|P| / E I): the exact beam-column result,
+  // (E I / L^3) q^3 sin q / (2 (1 - cos q) - q sin q) in compression, with sinh and cosh
+  // (q^3 sinh q / (q sinh q - 2 (cosh q - 1))) in tension; 12 E I / L^3 without axial force, zero at
+  // the sway buckling load P = pi^2 E I / L^2, negative beyond it.
+  double guided_beam_column_stiffness(double L, double E, double b, double h, double P);
+
+  // The same by the beam constraint model (Awtar, Slocum and Sevincer, J. Mech. Des. 129:625, 2007):
+  // its series to second order in the normalized tension p = -P L^2 / E I, (E I / L^3)(12 + 6/5 p -
+  // p^2 / 700), which keeps the load-stiffening of a blade in closed form (third-order error in p).
+  double bcm_guided_stiffness(double L, double E, double b, double h, double P);
+
   // Lateral-torsional buckling moment of a narrow rectangular strip (depth h in the bending plane,
   // width b < h), simply supported with fork ends (twist and lateral deflection held, warping and
   // both end rotations free) under a uniform moment: M_cr = (pi / L) sqrt(E I_y G J), I_y = h b^3 / 12,

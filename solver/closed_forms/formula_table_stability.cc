@@ -72,6 +72,43 @@ namespace closed_forms
            return r;
          }});
 
+      const std::vector<Argument> guided_args = {length_L(), modulus_E(), width_b(), depth_h(),
+                                                 signed_value("P", "axial force, positive in compression")};
+      const auto guided_checks = [](Result &r, const Args &p) {
+        check_beam_slenderness(r, p.at("L"), p.at("h"));
+        const double critical = euler_column_load(p.at("L"), p.at("E"), p.at("b"), p.at("h"), 1.0);
+        warn_if(r, p.at("P") >= critical, "P = " + number(p.at("P") / critical) + " P_cr: at or beyond the "
+                                          "sway buckling load the guided blade is unstable (stiffness <= 0)");
+      };
+      table.push_back(
+        {"guided_beam_column_stiffness",
+         "transverse stiffness F/delta of a fixed-guided blade (parallel-guided flexure) under an axial force "
+         "P (P > 0 compressive): exact beam-column, 12 E I / L^3 at P = 0, zero at pi^2 E I / L^2 (force/length)",
+         "Timoshenko and Gere, Theory of Elastic Stability, sec. 1.11-1.12",
+         guided_args,
+         [guided_checks](const Args &p) {
+           Result r{guided_beam_column_stiffness(p.at("L"), p.at("E"), p.at("b"), p.at("h"), p.at("P")), {}};
+           guided_checks(r, p);
+           return r;
+         }});
+      table.push_back(
+        {"bcm_guided_stiffness",
+         "the same by the beam constraint model, (E I / L^3)(12 + 6/5 p - p^2/700), p = -P L^2 / E I "
+         "(force/length)",
+         "Awtar, Slocum and Sevincer, J. Mech. Des. 129:625 (2007)",
+         guided_args,
+         [guided_checks](const Args &p) {
+           Result r{bcm_guided_stiffness(p.at("L"), p.at("E"), p.at("b"), p.at("h"), p.at("P")), {}};
+           guided_checks(r, p);
+           const double EI = p.at("E") * second_moment_of_area(p.at("b"), p.at("h"));
+           const double pn = std::abs(p.at("P")) * p.at("L") * p.at("L") / EI;
+           // Against the exact stiffness: 3e-5 at |p| = 2.5, 1e-4 (tension) and 3.5e-4 (compression) at
+           // |p| = 5, 3.9e-3 at p = -8 (unit.closed_forms.Beams.BeamConstraintModel...).
+           warn_if(r, pn > 5, "|p| = P L^2 / E I = " + number(pn) + " > 5: the second-order series departs from the "
+                                "exact beam-column stiffness by more than 0.035 % (0.4 % at 8 in compression; "
+                                "guided_beam_column_stiffness is exact)");
+           return r;
+         }});
       table.push_back(
         {"lateral_torsional_buckling_moment",
          "uniform moment that buckles a narrow strip sideways and twisted, fork ends, (pi/L) sqrt(E I_y G J) "

@@ -1,9 +1,11 @@
 // Linear beam formulas against the unit-load method, structural symmetry and published roots.
 #include <closed_forms/beams.h>
+#include <closed_forms/registry.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 using namespace closed_forms;
 
@@ -230,4 +232,97 @@ TEST(Beams, BeamColumnEndMomentStiffnessMatchesTheShotSolution)
     }
   EXPECT_NEAR(beam_column_end_moment_stiffness(L, E, b, h, 1e-14), EI / L, 1e-9 * EI / L);
   EXPECT_NEAR(beam_column_end_moment_stiffness(L, E, b, h, critical), 0.0, 1e-12 * EI / L);
+}
+
+namespace
+{
+  // Transverse end force of a fixed-guided beam-column (tension T, end displaced by 1 without turning)
+  // by Hermite cubic beam elements with their consistent geometric stiffness: a reference independent
+  // of the closed forms, converging like h^4 in the elements' count.
+  double guided_stiffness_by_beam_elements(double L, double EI, double T, int n)
+  {
+    const double l = L / n;
+    const int    size = 2 * (n + 1);
+    std::vector<std::vector<double>> K(size, std::vector<double>(size, 0.));
+    const double ke[4][4] = {{12, 6 * l, -12, 6 * l}, {6 * l, 4 * l * l, -6 * l, 2 * l * l},
+                             {-12, -6 * l, 12, -6 * l}, {6 * l, 2 * l * l, -6 * l, 4 * l * l}};
+    const double kg[4][4] = {{36, 3 * l, -36, 3 * l}, {3 * l, 4 * l * l, -3 * l, -l * l},
+                             {-36, -3 * l, 36, -3 * l}, {3 * l, -l * l, -3 * l, 4 * l * l}};
+    for (int e = 0; e < n; ++e)
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          K[2 * e + i][2 * e + j] += EI / (l * l * l) * ke[i][j] + T / (30 * l) * kg[i][j];
+    // Unknowns: the interior nodes' (w, theta); w(L) = 1, every other end value 0.
+    const int m = size - 4;
+    std::vector<std::vector<double>> A(m, std::vector<double>(m + 1, 0.));
+    for (int i = 0; i < m; ++i)
+      {
+        for (int j = 0; j < m; ++j)
+          A[i][j] = K[i + 2][j + 2];
+        A[i][m] = -K[i + 2][size - 2];
+      }
+    for (int c = 0; c < m; ++c) // Gaussian elimination (the matrix is positive definite below buckling)
+      for (int r = c + 1; r < m; ++r)
+        {
+          const double f = A[r][c] / A[c][c];
+          for (int k = c; k <= m; ++k)
+            A[r][k] -= f * A[c][k];
+        }
+    std::vector<double> u(size, 0.);
+    u[size - 2] = 1;
+    for (int r = m - 1; r >= 0; --r)
+      {
+        double s = A[r][m];
+        for (int k = r + 1; k < m; ++k)
+          s -= A[r][k] * u[k + 2];
+        u[r + 2] = s / A[r][r];
+      }
+    double force = 0;
+    for (int j = 0; j < size; ++j)
+      force += K[size - 2][j] * u[j];
+    return force;
+  }
+} // namespace
+
+TEST(Beams, GuidedBeamColumnAgainstBeamElements)
+{
+  const double L = 50, E = 2000, b = 3, h = 1;
+  const double EI = E * closed_forms::second_moment_of_area(b, h);
+  for (const double p : {-9.0, -5.0, -1.0, 0.0, 1e-7, 2.0, 20.0}) // normalized tension P L^2 / E I
+    {
+      const double T         = p * EI / (L * L);
+      const double reference = guided_stiffness_by_beam_elements(L, EI, T, 128);
+      const double exact     = closed_forms::guided_beam_column_stiffness(L, E, b, h, -T);
+      EXPECT_NEAR(exact / reference, 1.0, 1e-8) << "p = " << p; // 128 elements: 4.8e-9 at p = -9
+    }
+  EXPECT_NEAR(closed_forms::guided_beam_column_stiffness(L, E, b, h, 0) * L * L * L / EI, 12, 1e-12);
+  // Zero at the sway buckling load pi^2 E I / L^2, negative beyond.
+  const double critical = M_PI * M_PI * EI / (L * L);
+  EXPECT_NEAR(closed_forms::guided_beam_column_stiffness(L, E, b, h, critical) * L * L * L / EI, 0, 1e-9);
+  EXPECT_LT(closed_forms::guided_beam_column_stiffness(L, E, b, h, 1.01 * critical), 0);
+}
+
+TEST(Beams, BeamConstraintModelIsTheSecondOrderSeries)
+{
+  const double L = 50, E = 2000, b = 3, h = 1;
+  const double EI = E * closed_forms::second_moment_of_area(b, h);
+  const auto error = [&](double p) {
+    const double P = -p * EI / (L * L); // P > 0 compressive
+    return closed_forms::bcm_guided_stiffness(L, E, b, h, P) / closed_forms::guided_beam_column_stiffness(L, E, b, h, P) -
+           1;
+  };
+  // Third order in p: halving p divides the error by about 8, either sign.
+  for (const double p : {1.0, -1.0})
+    EXPECT_NEAR(error(p) / error(p / 2), 8, 0.8) << "p = " << p;
+  EXPECT_LT(std::abs(error(2.5)), 3e-5);
+  EXPECT_LT(std::abs(error(-2.5)), 3e-5);
+  EXPECT_LT(std::abs(error(-5)), 3.6e-4);
+  EXPECT_NEAR(error(-8), 3.9e-3, 1e-4);
+  // Registered, with the warning beyond |p| = 5.
+  const auto near = closed_forms::evaluate("bcm_guided_stiffness", {{"L", L}, {"E", E}, {"b", b}, {"h", h}, {"P", 0}});
+  EXPECT_NEAR(near.value * L * L * L / EI, 12, 1e-12);
+  EXPECT_TRUE(near.warnings.empty());
+  const auto far = closed_forms::evaluate("bcm_guided_stiffness",
+                                          {{"L", L}, {"E", E}, {"b", b}, {"h", h}, {"P", 6 * EI / (L * L)}});
+  EXPECT_EQ(far.warnings.size(), 1u);
 }
