@@ -3,8 +3,9 @@
 
     run_case.py CASE.prm [--np N] [--set "A/B=v"]... --check "EXPR"...
 
-Each --check is a Python expression over q (quantities), p (geometry parameters) and
-d (relative differences of the closed-form comparisons, keyed "quantity~formula"). Every value
+Each --check is a Python expression over q (quantities), p (geometry parameters),
+d (relative differences of the closed-form comparisons, keyed "quantity~formula") and w (their
+validity warnings, one text per comparison, keyed the same way). Every value
 used is printed, so a failing test shows what was measured.
 """
 import argparse
@@ -29,13 +30,14 @@ def main():
     q = summary["quantities"]
     p = summary["parameters"]
     d = {c["quantity"] + "~" + c["closed_form"]: c["relative_difference"] for c in summary["comparisons"]}
+    w = {c["quantity"] + "~" + c["closed_form"]: "; ".join(c["warnings"]) for c in summary["comparisons"]}
     for c in summary["comparisons"]:
         print("%-40s FE %-14.8g %-45s %-14.8g diff %+.3f %%  %s" % (
             c["quantity"], c["computed"], c["closed_form"], c["reference"],
             100 * c["relative_difference"], "; ".join(c["warnings"])))
     failed = 0
     for check in args.check:
-        ok = eval(check, {"math": math, "abs": abs}, {"q": q, "p": p, "d": d})
+        ok = eval(check, {"math": math, "abs": abs}, {"q": q, "p": p, "d": d, "w": w})
         print(("PASS  " if ok else "FAIL  ") + check)
         failed += not ok
     sys.exit(1 if failed else 0)
