@@ -97,6 +97,7 @@ def arch(case):
     readme_figure(bifurcation, "0.142785", "the perfect arch's bifurcation")
     readme_figure(power, "0.670", "Koiter fit's exponent")
     readme_figure(critical, "0.142727", "Koiter fit's lambda_b")
+    readme_figure(critical / bifurcation - 1, "-4.0e-4", "Koiter fit's lambda_b against the located bifurcation")
     # The same bifurcation by buckling about the finite-strain state just below it (a rigid
     # crown piece in a buckling analysis): measured 0.142716, 1.2e-4 below the fit.
     state = run_case(case, ["Analysis=buckling", "Buckling/Reference load factor=0.1425",
