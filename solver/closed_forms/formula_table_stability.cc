@@ -125,15 +125,19 @@ namespace closed_forms
            return r;
          }});
 
+      const std::vector<Argument> plate_args = {
+        positive("a", "plate length along the load"), positive("b", "plate width across the load"),
+        positive("t", "plate thickness"), modulus_E(), poisson_nu(),
+        optional_positive("m", "half-waves along the load", 1), optional_positive("n", "half-waves across it", 1)};
+      std::vector<Argument> plate_mindlin_args = plate_args;
+      plate_mindlin_args.push_back(optional_positive("kappa", "shear correction factor", 5.0 / 6.0));
       table.push_back(
         {"plate_buckling_stress",
          "uniform compressive stress along a that buckles a rectangular plate simply supported on all four "
          "edges into m half-waves along a and n across b, (pi^2 D / (b^2 t)) (m b/a + n^2 a/(m b))^2, "
          "D = E t^3 / 12 (1 - nu^2) (stress)",
          "Timoshenko and Gere, Theory of Elastic Stability, sec. 9.2",
-         {positive("a", "plate length along the load"), positive("b", "plate width across the load"),
-          positive("t", "plate thickness"), modulus_E(), poisson_nu(),
-          optional_positive("m", "half-waves along the load", 1), optional_positive("n", "half-waves across it", 1)},
+         plate_args,
          [](const Args &p) {
            const double a = p.at("a"), b = p.at("b"), t = p.at("t"), m = p.at("m"), n = p.at("n");
            Result r{plate_buckling_stress(a, b, t, p.at("E"), p.at("nu"), m, n), {}};
@@ -150,10 +154,7 @@ namespace closed_forms
          "the same with transverse shear (Mindlin's simply supported plate): the Kirchhoff stress / (1 + "
          "pi^2 D ((m/a)^2 + (n/b)^2) / (kappa G t)) (stress)",
          "Timoshenko and Gere, sec. 9.2; shear: Mindlin, J. Appl. Mech. 18:31 (1951), simply supported case",
-         {positive("a", "plate length along the load"), positive("b", "plate width across the load"),
-          positive("t", "plate thickness"), modulus_E(), poisson_nu(),
-          optional_positive("m", "half-waves along the load", 1), optional_positive("n", "half-waves across it", 1),
-          optional_positive("kappa", "shear correction factor", 5.0 / 6.0)},
+         plate_mindlin_args,
          [](const Args &p) {
            const double a = p.at("a"), b = p.at("b"), t = p.at("t"), m = p.at("m"), n = p.at("n");
            const double shear = plate_buckling_shear_share(a, b, t, p.at("E"), p.at("nu"), m, n, p.at("kappa"));

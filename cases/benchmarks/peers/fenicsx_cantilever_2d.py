@@ -6,43 +6,27 @@ x = L; the mean vertical displacement of that edge (integral over the edge / H).
 p on (ny L/H) x ny square quadrilaterals, MUMPS. Prints one JSON line per mesh (rank 0).
 Run: mpirun -np 1 /usr/bin/python3 fenicsx_cantilever_2d.py L H p NY [NY ...]"""
 import json
+import os
 import sys
 
 import numpy as np
-import ufl
 from dolfinx import fem, mesh
-from dolfinx.fem.petsc import LinearProblem
 from mpi4py import MPI
-from petsc4py import PETSc
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fenicsx_common import solve_clamped_plane_stress  # noqa: E402
 
 comm = MPI.COMM_WORLD
 L, H, degree = float(sys.argv[1]), float(sys.argv[2]), int(sys.argv[3])
 E, nu = 200000.0, 0.3
-mu = E / (2 * (1 + nu))
-lmbda = 2 * mu * nu / (1 - nu)  # plane stress
 
 
 def solve(ny):
     nx = int(round(ny * L / H))
     domain = mesh.create_rectangle(comm, [np.array([0.0, -H / 2]), np.array([L, H / 2])], [nx, ny],
                                    mesh.CellType.quadrilateral)
-    V = fem.VectorFunctionSpace(domain, ("Lagrange", degree))
-    u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
-
-    def sigma(w):
-        eps = ufl.sym(ufl.grad(w))
-        return 2 * mu * eps + lmbda * ufl.tr(eps) * ufl.Identity(2)
-
-    facets = mesh.locate_entities_boundary(domain, 1, lambda p: np.isclose(p[0], L))
-    tags = mesh.meshtags(domain, 1, facets, np.full(len(facets), 1, dtype=np.int32))
-    ds = ufl.Measure("ds", domain=domain, subdomain_data=tags)
-    traction = fem.Constant(domain, PETSc.ScalarType((0.0, -1.0 / H)))
-    clamped = fem.locate_dofs_geometrical(V, lambda p: np.isclose(p[0], 0.0))
-    bc = fem.dirichletbc(np.zeros(2, dtype=PETSc.ScalarType), clamped, V)
-    problem = LinearProblem(ufl.inner(sigma(u), ufl.grad(v)) * ufl.dx, ufl.inner(traction, v) * ds(1),
-                            bcs=[bc], petsc_options={"ksp_type": "preonly", "pc_type": "lu",
-                                                     "pc_factor_mat_solver_type": "mumps"})
-    uh = problem.solve()
+    uh, ds = solve_clamped_plane_stress(domain, degree, E, nu, 0.0, L, (0.0, -1.0 / H))
+    V = uh.function_space
     mean = comm.allreduce(fem.assemble_scalar(fem.form(uh[1] * ds(1))), op=MPI.SUM) / H
     return V.dofmap.index_map.size_global * 2, mean
 

@@ -69,3 +69,29 @@ def solve_and_report_energy(V, E, nu, bcs):
     if comm.rank == 0:
         print(json.dumps({"dofs": index_map.size_global * bs, "qoi": energy, "solve_s": t_end - t_solve,
                           "iterations": problem.solver.getIterationNumber(), "memory_mb": memory}))
+
+
+def solve_clamped_plane_stress(domain, degree, E, nu, x_clamped, x_loaded, traction):
+    """Plane stress on a 2D mesh, Lagrange `degree`, clamped on the line x = x_clamped, a uniform
+    traction (tx, ty) on the line x = x_loaded; MUMPS. Returns the displacement and the measure ds
+    of which ds(1) is the loaded edge."""
+    from dolfinx import mesh
+    mu = E / (2 * (1 + nu))
+    lmbda = 2 * mu * nu / (1 - nu)  # plane stress: 2 lambda mu / (lambda + 2 mu)
+    V = fem.VectorFunctionSpace(domain, ("Lagrange", degree))
+    u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
+
+    def sigma(w):
+        eps = ufl.sym(ufl.grad(w))
+        return 2 * mu * eps + lmbda * ufl.tr(eps) * ufl.Identity(2)
+
+    facets = mesh.locate_entities_boundary(domain, 1, lambda p: np.isclose(p[0], x_loaded))
+    tags = mesh.meshtags(domain, 1, facets, np.full(len(facets), 1, dtype=np.int32))
+    ds = ufl.Measure("ds", domain=domain, subdomain_data=tags)
+    load = fem.Constant(domain, PETSc.ScalarType(traction))
+    clamped = fem.locate_dofs_geometrical(V, lambda p: np.isclose(p[0], x_clamped))
+    bc = fem.dirichletbc(np.zeros(2, dtype=PETSc.ScalarType), clamped, V)
+    problem = LinearProblem(ufl.inner(sigma(u), ufl.grad(v)) * ufl.dx, ufl.inner(load, v) * ds(1),
+                            bcs=[bc], petsc_options={"ksp_type": "preonly", "pc_type": "lu",
+                                                     "pc_factor_mat_solver_type": "mumps"})
+    return problem.solve(), ds

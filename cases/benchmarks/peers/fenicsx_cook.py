@@ -7,19 +7,18 @@ the same cells as meshes/cook_membrane.geo), MUMPS. Prints one JSON line (rank 0
 displacement at the middle of the loaded edge (48, 52) and at the top corner (48, 60).
 Run: mpirun -np 2 /usr/bin/python3 fenicsx_cook.py N [N ...]"""
 import json
+import os
 import sys
 
 import numpy as np
-import ufl
-from dolfinx import fem, mesh
-from dolfinx.fem.petsc import LinearProblem
+from dolfinx import mesh
 from mpi4py import MPI
-from petsc4py import PETSc
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fenicsx_common import solve_clamped_plane_stress  # noqa: E402
 
 comm = MPI.COMM_WORLD
 E, nu = 1.0, 1.0 / 3.0
-mu = E / (2 * (1 + nu))
-lmbda = 2 * mu * nu / (1 - nu)  # plane stress: 2 lambda mu / (lambda + 2 mu)
 
 
 def solve(n):
@@ -28,23 +27,8 @@ def solve(n):
     xi, eta = x[:, 0].copy(), x[:, 1].copy()
     x[:, 0] = 48 * xi
     x[:, 1] = 44 * xi + eta * (44 - 28 * xi)
-    V = fem.VectorFunctionSpace(domain, ("Lagrange", 2))
-    u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
-
-    def sigma(w):
-        eps = ufl.sym(ufl.grad(w))
-        return 2 * mu * eps + lmbda * ufl.tr(eps) * ufl.Identity(2)
-
-    facets = mesh.locate_entities_boundary(domain, 1, lambda p: np.isclose(p[0], 48.0))
-    tags = mesh.meshtags(domain, 1, facets, np.full(len(facets), 1, dtype=np.int32))
-    ds = ufl.Measure("ds", domain=domain, subdomain_data=tags)
-    traction = fem.Constant(domain, PETSc.ScalarType((0.0, 1.0 / 16.0)))
-    clamped = fem.locate_dofs_geometrical(V, lambda p: np.isclose(p[0], 0.0))
-    bc = fem.dirichletbc(np.zeros(2, dtype=PETSc.ScalarType), clamped, V)
-    problem = LinearProblem(ufl.inner(sigma(u), ufl.grad(v)) * ufl.dx, ufl.inner(traction, v) * ds(1),
-                            bcs=[bc], petsc_options={"ksp_type": "preonly", "pc_type": "lu",
-                                                     "pc_factor_mat_solver_type": "mumps"})
-    uh = problem.solve()
+    uh, _ = solve_clamped_plane_stress(domain, 2, E, nu, 0.0, 48.0, (0.0, 1.0 / 16.0))
+    V = uh.function_space
     index_map = V.dofmap.index_map
     coords = V.tabulate_dof_coordinates()[: index_map.size_local]
     values = {}
