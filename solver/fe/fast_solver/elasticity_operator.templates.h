@@ -4,11 +4,8 @@
 #include "fast_solver/elasticity_operator.h"
 
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/tools.h>
 
@@ -109,47 +106,27 @@ namespace compliant::fast_solver
                                                const AffineConstraints<Number> &constraints_in,
                                                const LameParameters            &lame)
   {
-    fe_degree   = dof_handler.get_fe().degree;
-    constraints = &constraints_in;
-    mapping     = &mapping_in;
-    constraints_have_entries = false;
-    for (const auto &line : constraints_in.get_lines())
-      if (!line.entries.empty())
-        constraints_have_entries = true;
-    constraints_have_entries = Utilities::MPI::logical_or(constraints_have_entries,
-                                                          dof_handler.get_communicator());
-    typename MatrixFree<dim, Number>::AdditionalData additional_data;
-    additional_data.tasks_parallel_scheme = MatrixFree<dim, Number>::AdditionalData::none;
-    additional_data.mapping_update_flags  = update_gradients | update_JxW_values;
-    data = std::make_shared<MatrixFree<dim, Number>>();
-    data->reinit(mapping_in, dof_handler, constraints_in, QGauss<1>(fe_degree + 1), additional_data);
-
-    const unsigned int n_batches = data->n_cell_batches();
+    this->reinit_matrix_free(mapping_in, dof_handler, constraints_in);
+    const auto        &data      = *this->data;
+    const unsigned int n_batches = data.n_cell_batches();
     lambda.assign(n_batches, VectorizedArray<Number>());
     mu.assign(n_batches, VectorizedArray<Number>());
     for (unsigned int batch = 0; batch < n_batches; ++batch)
-      for (unsigned int lane = 0; lane < data->n_active_entries_per_cell_batch(batch); ++lane)
+      for (unsigned int lane = 0; lane < data.n_active_entries_per_cell_batch(batch); ++lane)
         {
-          const auto [l, m] = lame(data->get_cell_iterator(batch, lane)->material_id());
+          const auto [l, m] = lame(data.get_cell_iterator(batch, lane)->material_id());
           lambda[batch][lane] = l;
           mu[batch][lane]     = m;
         }
-
-    // Every constrained DoF this rank owns gets an identity row: the Krylov vectors stay zero there.
-    constrained_local_dofs.clear();
-    const auto &partitioner = data->get_vector_partitioner();
-    for (const auto index : partitioner->locally_owned_range())
-      if (constraints_in.is_constrained(index))
-        constrained_local_dofs.push_back(partitioner->global_to_local(index));
   }
 
   template <int dim, typename Number>
   void ElasticityOperator<dim, Number>::apply_cells(VectorType &dst, const VectorType &src,
                                                     const bool plain) const
   {
-    dispatch<dim, Number>(fe_degree, [&](auto kernel) {
+    dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
       using K = decltype(kernel);
-      data->template cell_loop<VectorType, VectorType>(
+      this->data->template cell_loop<VectorType, VectorType>(
         [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
             const std::pair<unsigned int, unsigned int> &range) {
           K::apply(mf, d, s, range, lambda, mu, plain);
@@ -159,50 +136,11 @@ namespace compliant::fast_solver
   }
 
   template <int dim, typename Number>
-  void ElasticityOperator<dim, Number>::vmult(VectorType &dst, const VectorType &src) const
+  void ElasticityOperator<dim, Number>::add_kernel_diagonal(VectorType &diagonal) const
   {
-    apply_cells(dst, src, false);
-    for (const unsigned int i : constrained_local_dofs)
-      dst.local_element(i) = src.local_element(i);
-  }
-
-  template <int dim, typename Number>
-  void ElasticityOperator<dim, Number>::vmult_add(VectorType &dst, const VectorType &src) const
-  {
-    VectorType product;
-    initialize_dof_vector(product);
-    vmult(product, src);
-    dst += product;
-  }
-
-  template <int dim, typename Number>
-  void ElasticityOperator<dim, Number>::apply_to_lifting(VectorType &dst, const VectorType &src) const
-  {
-    apply_cells(dst, src, true);
-    for (const unsigned int i : constrained_local_dofs)
-      dst.local_element(i) = 0;
-  }
-
-  template <int dim, typename Number>
-  void ElasticityOperator<dim, Number>::initialize_dof_vector(VectorType &vector) const
-  {
-    data->initialize_dof_vector(vector);
-  }
-
-  template <int dim, typename Number>
-  void ElasticityOperator<dim, Number>::compute_inverse_diagonal(VectorType &inverse_diagonal) const
-  {
-    initialize_dof_vector(inverse_diagonal);
-    if (constraints_have_entries)
-      dispatch<dim, Number>(fe_degree, [&](auto kernel) {
-        decltype(kernel)::diagonal(*data, inverse_diagonal, lambda, mu);
-      });
-    else
-      add_unconstrained_diagonal(inverse_diagonal);
-    for (const unsigned int i : constrained_local_dofs)
-      inverse_diagonal.local_element(i) = 1;
-    for (auto &value : inverse_diagonal)
-      value = value > 0 ? 1 / value : 1;
+    dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
+      decltype(kernel)::diagonal(*this->data, diagonal, lambda, mu);
+    });
   }
 
   template <int dim, typename Number>
@@ -210,16 +148,16 @@ namespace compliant::fast_solver
   {
     // Shape function i has one nonzero component c: eps_i : eps_i = (|grad phi|^2 + d_c phi^2) / 2
     // and div phi_i = d_c phi, so K_ii = sum_q JxW (mu |grad phi|^2 + (lambda + mu) d_c phi^2).
-    const DoFHandler<dim>  &dof_handler = data->get_dof_handler();
+    const DoFHandler<dim>  &dof_handler = this->data->get_dof_handler();
     const auto             &fe          = dof_handler.get_fe();
-    FEValues<dim>           fe_values(*mapping, fe, QGauss<dim>(fe_degree + 1),
+    FEValues<dim>           fe_values(*this->mapping, fe, QGauss<dim>(this->fe_degree + 1),
                             update_gradients | update_JxW_values);
     const unsigned int      n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
-    for (unsigned int batch = 0; batch < data->n_cell_batches(); ++batch)
-      for (unsigned int lane = 0; lane < data->n_active_entries_per_cell_batch(batch); ++lane)
+    for (unsigned int batch = 0; batch < this->data->n_cell_batches(); ++batch)
+      for (unsigned int lane = 0; lane < this->data->n_active_entries_per_cell_batch(batch); ++lane)
         {
-          const auto cell = data->get_cell_iterator(batch, lane);
+          const auto cell = this->data->get_cell_iterator(batch, lane);
           fe_values.reinit(cell);
           cell->get_dof_indices(dofs);
           const double l = lambda[batch][lane], m = mu[batch][lane];
@@ -239,33 +177,10 @@ namespace compliant::fast_solver
   }
 
   template <int dim, typename Number>
-  void ElasticityOperator<dim, Number>::compute_matrix(PETScWrappers::MPI::SparseMatrix &matrix,
-                                                       MPI_Comm communicator) const
+  void ElasticityOperator<dim, Number>::add_kernel_matrix(PETScWrappers::MPI::SparseMatrix &matrix) const
   {
-    const DoFHandler<dim> &dof_handler = data->get_dof_handler();
-    IndexSet               relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    DynamicSparsityPattern dsp(relevant);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, *constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, dof_handler.locally_owned_dofs(), communicator,
-                                               relevant);
-    matrix.reinit(dof_handler.locally_owned_dofs(), dof_handler.locally_owned_dofs(), dsp,
-                  communicator);
-    dispatch<dim, Number>(fe_degree, [&](auto kernel) {
-      decltype(kernel)::matrix(*data, *constraints, matrix, lambda, mu);
+    dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
+      decltype(kernel)::matrix(*this->data, *this->constraints, matrix, lambda, mu);
     });
   }
-
-  template <int dim, typename Number>
-  types::global_dof_index ElasticityOperator<dim, Number>::m() const
-  {
-    return data->get_vector_partitioner()->size();
-  }
-
-  template <int dim, typename Number>
-  Number ElasticityOperator<dim, Number>::el(const unsigned int, const unsigned int) const
-  {
-    throw std::logic_error("ElasticityOperator::el: entries are not stored");
-  }
-
 } // namespace compliant::fast_solver

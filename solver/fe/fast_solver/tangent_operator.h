@@ -10,24 +10,18 @@
 #pragma once
 
 #include <deal.II/base/aligned_vector.h>
-#include <deal.II/base/subscriptor.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/mapping.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/la_parallel_vector.h>
-#include <deal.II/matrix_free/matrix_free.h>
+
+#include "fast_solver/matrix_free_operator_base.h"
 
 #include <functional>
-#include <memory>
 #include <vector>
 
 namespace dealii::PETScWrappers::MPI
 {
-  class SparseMatrix;
   class Vector;
-} // namespace dealii::PETScWrappers::MPI
+}
 
 namespace compliant::fast_solver
 {
@@ -39,11 +33,10 @@ namespace compliant::fast_solver
                        dealii::SymmetricTensor<2, dim> &S, dealii::SymmetricTensor<4, dim> &dS_dE)>;
 
   template <int dim, typename Number>
-  class TangentOperator : public dealii::Subscriptor
+  class TangentOperator : public MatrixFreeOperatorBase<dim, Number>
   {
   public:
-    using VectorType = dealii::LinearAlgebra::distributed::Vector<Number>;
-    using value_type = Number;
+    using VectorType = typename MatrixFreeOperatorBase<dim, Number>::VectorType;
     using Vectorized = dealii::VectorizedArray<Number>;
 
     // constraints must be homogeneous (hanging nodes, supports held at zero). The state starts
@@ -57,26 +50,6 @@ namespace compliant::fast_solver
     void set_state(const dealii::DoFHandler<dim> &state_dofs,
                    const dealii::PETScWrappers::MPI::Vector &u, const PointResponse<dim> &response);
 
-    void vmult(VectorType &dst, const VectorType &src) const;
-    void Tvmult(VectorType &dst, const VectorType &src) const { vmult(dst, src); }
-    void vmult_add(VectorType &dst, const VectorType &src) const;
-    void Tvmult_add(VectorType &dst, const VectorType &src) const { vmult_add(dst, src); }
-    // dst = C^T (A src) with src read as given at constrained DoFs (moves prescribed values to
-    // the right-hand side).
-    void apply_to_lifting(VectorType &dst, const VectorType &src) const;
-
-    void initialize_dof_vector(VectorType &vector) const;
-    void compute_inverse_diagonal(VectorType &inverse_diagonal) const;
-    // The assembled matrix with unit diagonal on constrained rows (for the coarse level).
-    void compute_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix, MPI_Comm communicator) const;
-
-    dealii::types::global_dof_index m() const;
-    dealii::types::global_dof_index n() const { return m(); }
-    Number el(const unsigned int, const unsigned int) const; // not available: throws
-
-    const dealii::MatrixFree<dim, Number> &matrix_free() const { return *data; }
-    unsigned int                           degree() const { return fe_degree; }
-
     // The cached state of cell batch `batch` at its Gauss point q.
     struct PointState
     {
@@ -86,17 +59,13 @@ namespace compliant::fast_solver
     };
 
   private:
-    void apply_cells(VectorType &dst, const VectorType &src, bool plain) const;
-    // The diagonal from shape-function gradients (exact without hanging nodes or ties).
-    void add_unconstrained_diagonal(VectorType &diagonal) const;
+    void apply_cells(VectorType &dst, const VectorType &src, bool plain) const override;
+    void add_kernel_diagonal(VectorType &diagonal) const override;
+    // Exact without hanging nodes or ties.
+    void add_unconstrained_diagonal(VectorType &diagonal) const override;
+    void add_kernel_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix) const override;
 
-    std::shared_ptr<dealii::MatrixFree<dim, Number>> data;
-    const dealii::AffineConstraints<Number>         *constraints = nullptr;
-    const dealii::Mapping<dim>                      *mapping     = nullptr;
-    bool                                             constraints_have_entries = false;
-    unsigned int                                     fe_degree   = 1;
-    unsigned int                                     n_q_points  = 1;
-    dealii::AlignedVector<PointState>                state; // batch * n_q_points + q
-    std::vector<unsigned int>                        constrained_local_dofs;
+    unsigned int                      n_q_points = 1;
+    dealii::AlignedVector<PointState> state; // batch * n_q_points + q
   };
 } // namespace compliant::fast_solver

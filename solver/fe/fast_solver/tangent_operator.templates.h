@@ -4,12 +4,9 @@
 #include "fast_solver/tangent_operator.h"
 
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/tools.h>
 
@@ -104,35 +101,15 @@ namespace compliant::fast_solver
                                             const DoFHandler<dim>           &dof_handler,
                                             const AffineConstraints<Number> &constraints_in)
   {
-    fe_degree   = dof_handler.get_fe().degree;
-    n_q_points  = Utilities::pow(fe_degree + 1, dim);
-    constraints = &constraints_in;
-    mapping     = &mapping_in;
-    constraints_have_entries = false;
-    for (const auto &line : constraints_in.get_lines())
-      if (!line.entries.empty())
-        constraints_have_entries = true;
-    constraints_have_entries =
-      Utilities::MPI::logical_or(constraints_have_entries, dof_handler.get_communicator());
-    typename MatrixFree<dim, Number>::AdditionalData additional_data;
-    additional_data.tasks_parallel_scheme = MatrixFree<dim, Number>::AdditionalData::none;
-    additional_data.mapping_update_flags  = update_gradients | update_JxW_values;
-    data = std::make_shared<MatrixFree<dim, Number>>();
-    data->reinit(mapping_in, dof_handler, constraints_in, QGauss<1>(fe_degree + 1), additional_data);
-
+    this->reinit_matrix_free(mapping_in, dof_handler, constraints_in);
+    n_q_points = Utilities::pow(this->fe_degree + 1, dim);
     // Undeformed and stress-free: F = I, S = 0 (the tangent then has no stiffness until set_state).
     PointState undeformed;
     for (unsigned int d = 0; d < dim; ++d)
       undeformed.F[d][d] = 1;
-    state.resize_fast(data->n_cell_batches() * n_q_points);
+    state.resize_fast(this->data->n_cell_batches() * n_q_points);
     for (auto &point : state)
       point = undeformed;
-
-    constrained_local_dofs.clear();
-    const auto &partitioner = data->get_vector_partitioner();
-    for (const auto index : partitioner->locally_owned_range())
-      if (constraints_in.is_constrained(index))
-        constrained_local_dofs.push_back(partitioner->global_to_local(index));
   }
 
   template <int dim, typename Number>
@@ -142,17 +119,17 @@ namespace compliant::fast_solver
   {
     // FEValues on the state's element at this level's Gauss points: the points come in the
     // same (lexicographic tensor-product) order as in FEEvaluation.
-    const QGauss<dim>                quadrature(fe_degree + 1);
-    FEValues<dim>                    values(*mapping, state_dofs.get_fe(), quadrature, update_gradients);
+    const QGauss<dim>                quadrature(this->fe_degree + 1);
+    FEValues<dim>                    values(*this->mapping, state_dofs.get_fe(), quadrature, update_gradients);
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      grad_u(n_q_points);
     SymmetricTensor<2, dim>          S;
     SymmetricTensor<4, dim>          dS_dE;
     bool                             finite = true;
-    for (unsigned int batch = 0; batch < data->n_cell_batches(); ++batch)
-      for (unsigned int lane = 0; lane < data->n_active_entries_per_cell_batch(batch); ++lane)
+    for (unsigned int batch = 0; batch < this->data->n_cell_batches(); ++batch)
+      for (unsigned int lane = 0; lane < this->data->n_active_entries_per_cell_batch(batch); ++lane)
         {
-          const auto level_cell = data->get_cell_iterator(batch, lane);
+          const auto level_cell = this->data->get_cell_iterator(batch, lane);
           const typename DoFHandler<dim>::active_cell_iterator cell(&state_dofs.get_triangulation(),
                                                                     level_cell->level(),
                                                                     level_cell->index(), &state_dofs);
@@ -176,18 +153,18 @@ namespace compliant::fast_solver
                   }
             }
         }
-    if (Utilities::MPI::logical_or(!finite, data->get_dof_handler().get_communicator()))
+    if (Utilities::MPI::logical_or(!finite, this->data->get_dof_handler().get_communicator()))
       throw std::runtime_error("matrix-free tangent: the law gives no finite stress at a Gauss "
-                               "point of the degree-" + std::to_string(fe_degree) + " level");
+                               "point of the degree-" + std::to_string(this->fe_degree) + " level");
   }
 
   template <int dim, typename Number>
   void TangentOperator<dim, Number>::apply_cells(VectorType &dst, const VectorType &src,
                                                  const bool plain) const
   {
-    tangent_detail::dispatch<dim, Number>(fe_degree, [&](auto kernel) {
+    tangent_detail::dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
       using K = decltype(kernel);
-      data->template cell_loop<VectorType, VectorType>(
+      this->data->template cell_loop<VectorType, VectorType>(
         [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
             const std::pair<unsigned int, unsigned int> &range) { K::apply(mf, d, s, range, state, plain); },
         dst, src, true);
@@ -195,51 +172,11 @@ namespace compliant::fast_solver
   }
 
   template <int dim, typename Number>
-  void TangentOperator<dim, Number>::vmult(VectorType &dst, const VectorType &src) const
+  void TangentOperator<dim, Number>::add_kernel_diagonal(VectorType &diagonal) const
   {
-    apply_cells(dst, src, false);
-    for (const unsigned int i : constrained_local_dofs)
-      dst.local_element(i) = src.local_element(i);
-  }
-
-  template <int dim, typename Number>
-  void TangentOperator<dim, Number>::vmult_add(VectorType &dst, const VectorType &src) const
-  {
-    VectorType product;
-    initialize_dof_vector(product);
-    vmult(product, src);
-    dst += product;
-  }
-
-  template <int dim, typename Number>
-  void TangentOperator<dim, Number>::apply_to_lifting(VectorType &dst, const VectorType &src) const
-  {
-    apply_cells(dst, src, true);
-    for (const unsigned int i : constrained_local_dofs)
-      dst.local_element(i) = 0;
-  }
-
-  template <int dim, typename Number>
-  void TangentOperator<dim, Number>::initialize_dof_vector(VectorType &vector) const
-  {
-    data->initialize_dof_vector(vector);
-  }
-
-  template <int dim, typename Number>
-  void TangentOperator<dim, Number>::compute_inverse_diagonal(VectorType &inverse_diagonal) const
-  {
-    initialize_dof_vector(inverse_diagonal);
-    if (constraints_have_entries)
-      tangent_detail::dispatch<dim, Number>(fe_degree, [&](auto kernel) {
-        decltype(kernel)::diagonal(*data, inverse_diagonal, state);
-      });
-    else
-      add_unconstrained_diagonal(inverse_diagonal);
-    for (const unsigned int i : constrained_local_dofs)
-      inverse_diagonal.local_element(i) = 1;
-    // A tangent past a limit point can have non-positive diagonal entries: leave them unscaled.
-    for (auto &value : inverse_diagonal)
-      value = value > 0 ? 1 / value : 1;
+    tangent_detail::dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
+      decltype(kernel)::diagonal(*this->data, diagonal, state);
+    });
   }
 
   template <int dim, typename Number>
@@ -247,18 +184,18 @@ namespace compliant::fast_solver
   {
     // Shape function i has one nonzero component c with gradient g: Grad phi = e_c (x) g,
     // sym(F^T Grad phi) = sym(f (x) g) with f the row c of F, and the geometric part is g.S.g.
-    const DoFHandler<dim> &dof_handler = data->get_dof_handler();
+    const DoFHandler<dim> &dof_handler = this->data->get_dof_handler();
     const auto            &fe          = dof_handler.get_fe();
-    FEValues<dim>          fe_values(*mapping, fe, QGauss<dim>(fe_degree + 1), update_gradients | update_JxW_values);
+    FEValues<dim>          fe_values(*this->mapping, fe, QGauss<dim>(this->fe_degree + 1), update_gradients | update_JxW_values);
     const unsigned int     n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     std::vector<Tensor<2, dim>>          F(n_q_points);
     std::vector<SymmetricTensor<2, dim>> S(n_q_points);
     std::vector<SymmetricTensor<4, dim>> C(n_q_points);
-    for (unsigned int batch = 0; batch < data->n_cell_batches(); ++batch)
-      for (unsigned int lane = 0; lane < data->n_active_entries_per_cell_batch(batch); ++lane)
+    for (unsigned int batch = 0; batch < this->data->n_cell_batches(); ++batch)
+      for (unsigned int lane = 0; lane < this->data->n_active_entries_per_cell_batch(batch); ++lane)
         {
-          const auto cell = data->get_cell_iterator(batch, lane);
+          const auto cell = this->data->get_cell_iterator(batch, lane);
           fe_values.reinit(cell);
           cell->get_dof_indices(dofs);
           for (unsigned int q = 0; q < n_q_points; ++q)
@@ -296,31 +233,10 @@ namespace compliant::fast_solver
   }
 
   template <int dim, typename Number>
-  void TangentOperator<dim, Number>::compute_matrix(PETScWrappers::MPI::SparseMatrix &matrix,
-                                                    MPI_Comm communicator) const
+  void TangentOperator<dim, Number>::add_kernel_matrix(PETScWrappers::MPI::SparseMatrix &matrix) const
   {
-    const DoFHandler<dim> &dof_handler = data->get_dof_handler();
-    IndexSet               relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    DynamicSparsityPattern dsp(relevant);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, *constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, dof_handler.locally_owned_dofs(), communicator,
-                                               relevant);
-    matrix.reinit(dof_handler.locally_owned_dofs(), dof_handler.locally_owned_dofs(), dsp, communicator);
-    tangent_detail::dispatch<dim, Number>(fe_degree, [&](auto kernel) {
-      decltype(kernel)::matrix(*data, *constraints, matrix, state);
+    tangent_detail::dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
+      decltype(kernel)::matrix(*this->data, *this->constraints, matrix, state);
     });
-  }
-
-  template <int dim, typename Number>
-  types::global_dof_index TangentOperator<dim, Number>::m() const
-  {
-    return data->get_vector_partitioner()->size();
-  }
-
-  template <int dim, typename Number>
-  Number TangentOperator<dim, Number>::el(const unsigned int, const unsigned int) const
-  {
-    throw std::logic_error("TangentOperator::el: entries are not stored");
   }
 } // namespace compliant::fast_solver

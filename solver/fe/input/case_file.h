@@ -80,10 +80,16 @@ namespace compliant
     bool        write_fields = true;
   };
 
-  // Declares every entry. Geometry parameters of the given .geo file become entries of
-  // "Geometry/Parameters" with the file's defaults and help strings.
+  // Declares every entry (input/case_declarations.cc). Geometry parameters of the given .geo file
+  // become entries of "Geometry/Parameters" with the file's defaults and help strings.
   void declare_case_parameters(dealii::ParameterHandler             &prm,
                                const std::vector<GeometryParameter> &geometry_parameters);
+
+  // Declares the subsection "Parameters" of the current subsection (Geometry): one number entry
+  // per parameter of the .geo file, with its default and help string. Shared by every parameter
+  // file read with read_parameter_file (the case file, section_torsion's case file).
+  void declare_geometry_parameters(dealii::ParameterHandler             &prm,
+                                   const std::vector<GeometryParameter> &geometry_parameters);
 
   struct CommandLine
   {

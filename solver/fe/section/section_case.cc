@@ -1,7 +1,5 @@
 #include "section/section_case.h"
 
-#include "input/spec_list.h"
-
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -22,11 +20,7 @@ namespace compliant::section
                         "A 2D cross-section: parametric gmsh .geo file (meshed at run time) or a "
                         "ready .msh file, all triangles or all quadrilaterals. Relative paths are "
                         "looked up next to the case file, then in meshes/.");
-      prm.enter_subsection("Parameters");
-      for (const auto &p : geometry_parameters)
-        prm.declare_entry(p.name, round_trip_text(p.value), Patterns::Double(),
-                          p.help.empty() ? "Geometry parameter of the .geo file." : p.help);
-      prm.leave_subsection();
+      declare_geometry_parameters(prm, geometry_parameters);
     }
     prm.leave_subsection();
 

@@ -1,0 +1,80 @@
+// What the two matrix-free operators (small-strain ElasticityOperator, finite-strain
+// TangentOperator) share: the MatrixFree set-up, identity rows on constrained DoFs, the lifting
+// product, the inverse diagonal and the assembled coarse matrix. A derived operator supplies only
+// its cell kernel (apply_cells) and its diagonal and matrix from that kernel.
+#pragma once
+
+#include <deal.II/base/subscriptor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/matrix_free/matrix_free.h>
+
+#include <memory>
+#include <vector>
+
+namespace dealii::PETScWrappers::MPI
+{
+  class SparseMatrix;
+}
+
+namespace compliant::fast_solver
+{
+  template <int dim, typename Number>
+  class MatrixFreeOperatorBase : public dealii::Subscriptor
+  {
+  public:
+    using VectorType = dealii::LinearAlgebra::distributed::Vector<Number>;
+    using value_type = Number;
+
+    virtual ~MatrixFreeOperatorBase() = default;
+
+    void vmult(VectorType &dst, const VectorType &src) const;
+    void Tvmult(VectorType &dst, const VectorType &src) const { vmult(dst, src); }
+    void vmult_add(VectorType &dst, const VectorType &src) const;
+    void Tvmult_add(VectorType &dst, const VectorType &src) const { vmult_add(dst, src); }
+
+    // dst = C^T (A src) with src read as given at constrained DoFs (no constraint resolution):
+    // moves prescribed values to the right-hand side.
+    void apply_to_lifting(VectorType &dst, const VectorType &src) const;
+
+    void initialize_dof_vector(VectorType &vector) const;
+    // Non-positive entries (a tangent past a limit point) are left unscaled.
+    void compute_inverse_diagonal(VectorType &inverse_diagonal) const;
+    // The assembled matrix with unit diagonal on constrained rows (for the coarse level).
+    void compute_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix, MPI_Comm communicator) const;
+
+    dealii::types::global_dof_index m() const;
+    dealii::types::global_dof_index n() const { return m(); }
+    Number el(const unsigned int, const unsigned int) const; // not available: throws
+
+    const dealii::MatrixFree<dim, Number> &matrix_free() const { return *data; }
+    unsigned int                           degree() const { return fe_degree; }
+
+  protected:
+    // constraints must be homogeneous (hanging nodes, supports held at zero): the operator acts
+    // on the correction from a lifting that carries the prescribed values.
+    void reinit_matrix_free(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler,
+                            const dealii::AffineConstraints<Number> &constraints);
+
+    // dst = A src cell by cell, src read with (plain = false) or without constraint resolution.
+    virtual void apply_cells(VectorType &dst, const VectorType &src, bool plain) const = 0;
+    // The diagonal through the kernel on unit vectors (needed where constraints have entries).
+    virtual void add_kernel_diagonal(VectorType &diagonal) const = 0;
+    // The diagonal from shape-function gradients alone: exact when no constraint has entries
+    // (no hanging nodes, no ties), the common case, and much cheaper.
+    virtual void add_unconstrained_diagonal(VectorType &diagonal) const = 0;
+    // The cell matrices through the kernel, into the matrix laid out by compute_matrix.
+    virtual void add_kernel_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix) const = 0;
+
+    std::shared_ptr<dealii::MatrixFree<dim, Number>> data;
+    const dealii::AffineConstraints<Number>         *constraints = nullptr;
+    const dealii::Mapping<dim>                      *mapping     = nullptr;
+    bool                                             constraints_have_entries = false;
+    unsigned int                                     fe_degree   = 1;
+
+  private:
+    std::vector<unsigned int> constrained_local_dofs;
+  };
+} // namespace compliant::fast_solver

@@ -1,0 +1,285 @@
+// The entries of the case file, one function per section, declared in the order --help lists
+// them (input/case_file.h).
+#include "input/case_file.h"
+
+#include "input/analysis_declarations.h"
+#include "input/spec_list.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace compliant
+{
+  using dealii::ParameterHandler;
+  namespace Patterns = dealii::Patterns;
+
+  void declare_geometry_parameters(ParameterHandler                     &prm,
+                                   const std::vector<GeometryParameter> &geometry_parameters)
+  {
+    prm.enter_subsection("Parameters");
+    for (const auto &p : geometry_parameters)
+      prm.declare_entry(p.name, round_trip_text(p.value), Patterns::Double(),
+                        p.help.empty() ? "Geometry parameter of the .geo file." : p.help);
+    prm.leave_subsection();
+  }
+
+  namespace
+  {
+    // Model, Analysis and the entries each registered analysis declares for itself.
+    void declare_model_and_analysis(ParameterHandler &prm)
+    {
+      prm.declare_entry("Model", "plane stress",
+                        Patterns::Selection("plane stress|plane strain|3d"),
+                        "Kinematic model: 2D plane stress (uses Material/Thickness), 2D plane "
+                        "strain, or 3D solid. Must match the dimension of the mesh.");
+      std::string names, documentation;
+      if (registered_analyses().empty())
+        throw std::logic_error("no analysis registered before the case was read");
+      for (const auto &a : registered_analyses())
+        {
+          names += (names.empty() ? "" : "|") + a.name;
+          documentation += " '" + a.name + "': " + a.documentation + ".";
+        }
+      prm.declare_entry("Analysis", "linear static", Patterns::Selection(names),
+                        "Kind of analysis." + documentation);
+      for (const auto &a : registered_analyses())
+        a.declare_parameters(prm);
+    }
+
+    void declare_geometry_section(ParameterHandler                     &prm,
+                                  const std::vector<GeometryParameter> &geometry_parameters)
+    {
+      prm.enter_subsection("Geometry");
+      {
+        prm.declare_entry("Mesh file", "",
+                          Patterns::Anything(),
+                          "A parametric gmsh .geo file (meshed at run time), a ready .msh file, or an "
+                          "Abaqus/CalculiX .inp mesh (element and node sets and surfaces are the "
+                          "group names; see README, Geometry). "
+                          "Relative paths are looked up next to the case file, then in meshes/.");
+        prm.declare_entry("Imperfection", "", Patterns::Anything(),
+                          "Nonlinear static analyses: the geometry shifted by buckling mode shapes before "
+                          "the run, '<mode>: <amplitude>[, <mode>: <amplitude> ...]' (e.g. '1: 0.01'). "
+                          "The modes are those of Analysis = buckling on the perfect geometry under the "
+                          "case's loads (settings from the Buckling subsection), each scaled so that its "
+                          "largest displacement component is the amplitude (a length, any sign; where a "
+                          "positive and a negative component are equally large, as in antisymmetric "
+                          "modes, the one at the smallest x, then y, then z, takes the amplitude's sign). "
+                          "A path that would meet a bifurcation then follows the buckled branch. Empty: "
+                          "the perfect geometry.");
+        declare_geometry_parameters(prm, geometry_parameters);
+      }
+      prm.leave_subsection();
+    }
+
+    void declare_discretization_section(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      {
+        prm.declare_entry("Element degree", "2", Patterns::Integer(1, 3),
+                          "Polynomial degree of the displacement elements (1 to 3).");
+        prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 8),
+                          "Uniform refinements of the gmsh mesh before solving.");
+        prm.declare_entry("Formulation", "displacement", Patterns::Selection("displacement|mixed"),
+                          "Linear static and modal analyses. mixed: displacement Q_k with a discontinuous "
+                          "pressure P_(k-1) (Q2-P1 at degree 2), free of volumetric locking for "
+                          "nearly incompressible materials (printed TPU, nu near 0.5); plane strain "
+                          "and 3D, quadrilaterals/hexahedra, degree 2 or 3, solved by MUMPS. "
+                          "Finite strain has its own Finite strain/Formulation.");
+        prm.declare_entry("Curved boundaries", "true", Patterns::Bool(),
+                          "true: boundaries the gmsh geometry draws as circles (2D) or cylinders "
+                          "and spheres (3D) stay on that shape: refinement puts new vertices on it "
+                          "and the cells touching it are mapped with the element degree "
+                          "(isoparametric), so quadratic elements keep their order on holes and "
+                          "notches. Other curved shapes (splines, ellipses) and .msh meshes are "
+                          "straight-sided, as the log says. false: every cell straight-sided.");
+        prm.declare_entry("Mesh partition", "auto", Patterns::Selection("auto|shared|distributed"),
+                          "How the mesh is spread over MPI ranks. shared: every rank holds the "
+                          "whole mesh and owns a METIS part. distributed: each rank holds only its "
+                          "part (read and cut on rank 0), so the memory per rank falls as ranks "
+                          "grow; static analyses only. auto: distributed from 2e5 estimated DoFs "
+                          "on more than one rank where the analysis allows it, else shared.");
+      }
+      prm.leave_subsection();
+    }
+
+    void declare_material_section(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      {
+        prm.declare_entry("Thickness", "1", Patterns::Double(0),
+                          "Out-of-plane thickness of 2D models; forces and energies are totals "
+                          "over this thickness.");
+        prm.declare_entry("Unit system", "SI", Patterns::Selection("SI|mm-N-MPa"),
+                          "Units of the case. Library materials are stored in SI and converted: "
+                          "mm-N-MPa gives E in MPa, density in t/mm^3.");
+        prm.declare_entry("Materials", "*: steel", Patterns::Anything(),
+                          "Material of each physical body: 'name: library_material [, E=..., "
+                          "nu=..., density=..., yield=...]; ...'. '*' means every body. Library: "
+                          "see the materials table in --help.");
+      }
+      prm.leave_subsection();
+    }
+
+    void declare_boundary_conditions_section(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        prm.declare_entry("Clamped", "", Patterns::Anything(),
+                          "Boundaries with all displacement components zero: 'left, right'.");
+        prm.declare_entry("Displacement", "", Patterns::Anything(),
+                          "Prescribed displacement per component: 'right: y=0.1; top: x=0, z=0'. "
+                          "Components not named stay free. A value may be an expression of x, y, z, e.g. "
+                          "'outer: x=1e-3*(x+y/2), y=1e-3*(y+x/2)'.");
+        prm.declare_entry("Rotation", "", Patterns::Anything(),
+                          "Prescribed rigid rotation of a boundary: 'right: degrees=1 (or angle=rad), "
+                          "center=x y z, axis=0 0 1'. In 2D the axis is z. The exact rotation is "
+                          "imposed (not its small-angle form). Coordinates may be expressions of geometry "
+                          "parameters: center=l/2 0.");
+        prm.declare_entry("Rigid", "", Patterns::Anything(),
+                          "Boundaries that move as rigid bodies loaded by a force and a moment, "
+                          "their translation and rotation unknowns (a torque drive, a pure end "
+                          "moment): 'right: moment=M (2D, about z) or moment=Mx My Mz (3D), "
+                          "force=Fx Fy [Fz], center=x y [z]'. The moment acts about the center "
+                          "(default: the centroid of the boundary's nodes), which moves with the "
+                          "boundary; force and moment keep their direction (dead loads), are totals "
+                          "over the thickness in 2D and scale with the load factor; numbers or expressions of "
+                          "geometry parameters. Exact rigid "
+                          "motion at finite strain (any rotation). Gives rigid_rotation_<name>_<z|x y "
+                          "z> (radians) and rigid_displacement_<name>_<x|y|z> (of the center). "
+                          "Linear and nonlinear static analyses; a rigid boundary shares no node "
+                          "with a supported boundary.");
+      }
+      prm.leave_subsection();
+    }
+
+    void declare_loads_section(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loads");
+      {
+        prm.declare_entry("Traction", "", Patterns::Anything(),
+                          "Traction vector (force per area) on boundaries: 'top: 0 -1 0'.");
+        prm.declare_entry("Total force", "", Patterns::Anything(),
+                          "Total force spread uniformly over a boundary: 'right: 0 -1'.");
+        prm.declare_entry("Pressure", "", Patterns::Anything(),
+                          "Pressure (force per area) normal to boundaries, positive pushing on the "
+                          "body (against the outward normal): 'inner: 2; outer: 0.5*(1+y/10)', a "
+                          "number or an expression of x, y, z and geometry parameters. On the "
+                          "undeformed boundary: linear analyses; at finite strain use Finite "
+                          "strain/Follower pressure.");
+        prm.declare_entry("Body force", "", Patterns::Anything(),
+                          "Force per volume on every body: '0 -9.81 0'.");
+        prm.declare_entry("Gravity", "", Patterns::Anything(),
+                          "Acceleration of gravity: body force = density * gravity.");
+      }
+      prm.leave_subsection();
+    }
+
+    void declare_linear_solver_section(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      {
+        prm.declare_entry("Method", "auto", Patterns::Selection("auto|matrix-free|cg-amg|direct"),
+                          "auto: matrix-free for degree >= 2 on quadrilaterals/hexahedra in linear "
+                          "static analyses, else MUMPS below 30000 DoFs, else cg-amg; an iterative "
+                          "solve that fails to converge in 300 iterations is redone with MUMPS (the "
+                          "log says so). matrix-free: CG on the operator without a stored matrix, "
+                          "preconditioned by a p-multigrid (degree p..1, Chebyshev smoothing) with "
+                          "PETSc GAMG on degree 1 (linear static, quadrilaterals/hexahedra; "
+                          "otherwise cg-amg is used and the log says so). cg-amg: conjugate gradients "
+                          "with PETSc GAMG on the assembled matrix, given its block size and the "
+                          "rigid-body modes. direct: MUMPS LU.");
+        prm.declare_entry("Relative tolerance", "1e-10", Patterns::Double(0, 1),
+                          "Residual reduction of the iterative solver.");
+        prm.declare_entry("Maximum iterations", "2000", Patterns::Integer(1),
+                          "Iterations before the iterative solver gives up.");
+        prm.declare_entry("PETSc options", "", Patterns::Anything(),
+                          "Extra PETSc options, e.g. '-pc_gamg_threshold 0.02'.");
+      }
+      prm.leave_subsection();
+    }
+
+    void declare_quantities_section(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Quantities");
+      {
+        prm.declare_entry("Points", "", Patterns::Anything(),
+                          "Named points for displacement output: 'tip: 48 60; mid: 24 52'. "
+                          "Gives displacement_<name>_<x|y|z>. Coordinates may be expressions of geometry "
+                          "parameters: 'p1: 0.4*L H/4 0'.");
+        prm.declare_entry("Reactions", "", Patterns::Anything(),
+                          "Boundaries whose reaction force and moment are reported, with the moment "
+                          "point (default: origin; rotation-driven boundaries: the rotation "
+                          "center): 'left; right: 100 5 0'.");
+        prm.declare_entry("Mean displacements", "", Patterns::Anything(),
+                          "Boundaries whose average displacement is reported: 'right, top'.");
+        prm.declare_entry("Rotations", "", Patterns::Anything(),
+                          "Boundaries whose best-fit rigid rotation is reported: 'right'.");
+        prm.declare_entry("Stress points", "", Patterns::Anything(),
+                          "Named points for stress output: 'hole: 10 0; root: L/2 H/2'. Gives "
+                          "stress_<name>_<xx|yy|zz|xy[|xz|yz]> (Cauchy, from the stress field "
+                          "recovered by L2 projection onto continuous elements of the displacement's "
+                          "degree), von_mises_<name>, principal_stress_<name>_<1|2|3> (largest "
+                          "first), and the components and von Mises with the suffix _raw (from the "
+                          "displacement gradient in the cell holding the point: discontinuous "
+                          "between cells).");
+        prm.declare_entry("Region maxima", "", Patterns::Anything(),
+                          "Bodies (physical groups of full dimension) whose peak strain and stress "
+                          "are reported with where they occur: 'flexure_A, flexure_B' ('*': every "
+                          "body). Gives max_principal_strain_in_<body> (largest principal strain: "
+                          "small strain in linear analyses, engineering lambda_1 - 1 at finite "
+                          "strain; in-plane in 2D), max_von_mises_in_<body> and the reference "
+                          "coordinates of each (_x, _y, _z), sampled at quadrature points and "
+                          "element nodes; per step in a nonlinear curve.csv. Linear static, "
+                          "linkage and nonlinear static analyses.");
+        prm.declare_entry("Derived", "", Patterns::Anything(),
+                          "Quantities computed from others with muparser: "
+                          "'J = reaction_moment_right_x / (G * twist)'. Names of quantities, "
+                          "geometry parameters, E, nu, G and thickness may be used.");
+      }
+      prm.leave_subsection();
+    }
+
+    void declare_comparison_section(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Comparison");
+      {
+        prm.declare_entry("Checks", "", Patterns::Anything(),
+                          "Quantities compared with closed forms: "
+                          "'displacement_tip_y ~ timoshenko_cantilever_deflection(P=1, L=L, ...); ...'. "
+                          "Arguments are muparser expressions of geometry parameters, E, nu, G, "
+                          "thickness and quantities. See the closed-form list in --help.");
+      }
+      prm.leave_subsection();
+    }
+
+    void declare_output_section(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      {
+        prm.declare_entry("Directory", "", Patterns::Anything(),
+                          "Where results go; empty: results/<case file name>.");
+        prm.declare_entry("Fields", "true", Patterns::Bool(),
+                          "Write HDF5 + XDMF fields (displacement, strain, stress, von Mises, "
+                          "material and partition id) for ParaView.");
+      }
+      prm.leave_subsection();
+    }
+  } // namespace
+
+  void declare_case_parameters(ParameterHandler                     &prm,
+                               const std::vector<GeometryParameter> &geometry_parameters)
+  {
+    declare_model_and_analysis(prm);
+    declare_geometry_section(prm, geometry_parameters);
+    declare_discretization_section(prm);
+    declare_material_section(prm);
+    declare_boundary_conditions_section(prm);
+    declare_loads_section(prm);
+    declare_linear_solver_section(prm);
+    declare_quantities_section(prm);
+    declare_comparison_section(prm);
+    declare_output_section(prm);
+  }
+} // namespace compliant
