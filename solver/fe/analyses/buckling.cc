@@ -178,7 +178,7 @@ namespace compliant
       RunSummary summary = start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
       summary.settings.insert({"eigensolver", "SLEPc Krylov-Schur, shift-and-invert about 0, MUMPS"});
       summary.settings.insert({"reference_state", "linear static under the case's loads (load factor 1)"});
-      summary.settings.insert({"solver", problem.solver_method});
+      summary.settings.insert({"solver", to_string(problem.solver_method)});
       summary.quantities = buckling.model.quantities;
       auto modes = add_buckling_factors(buckling.result, 0, summary.quantities, root, buckling.eigen_seconds);
       summary.quantities["time_geometric_stiffness"] = buckling.geometric_seconds;

@@ -17,8 +17,8 @@ namespace compliant
       const auto &problem = *model.problem;
       RunSummary  summary =
         start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
-      summary.settings.insert({"solver", problem.solver_method});
-      summary.settings.insert({"solver_requested", p.solver_method});
+      summary.settings.insert({"solver", to_string(problem.solver_method)});
+      summary.settings.insert({"solver_requested", to_string(p.solver_method)});
       summary.settings.insert({"mesh_partition", to_string(problem.mesh_partition.partition)});
       if (!problem.solver_note.empty())
         summary.settings.insert({"solver_note", problem.solver_note});

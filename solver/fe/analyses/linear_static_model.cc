@@ -70,7 +70,7 @@ namespace compliant
         if (!problem.solver_note.empty())
           std::cout << "Linear solver: " << problem.solver_note << std::endl;
         std::cout << "Solved: " << problem.statistics.iterations << " iterations ("
-                  << problem.solver_method << "), assembly " << problem.statistics.assembly_seconds
+                  << to_string(problem.solver_method) << "), assembly " << problem.statistics.assembly_seconds
                   << " s, solve " << problem.statistics.solve_seconds << " s";
         if (!problem.statistics.level_dofs.empty())
           {

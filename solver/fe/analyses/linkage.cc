@@ -48,12 +48,12 @@ namespace compliant
       problem.solve();
       if (root)
         std::cout << "Solved: " << problem.statistics.iterations << " iterations ("
-                  << p.solver_method << "), assembly " << problem.statistics.assembly_seconds
+                  << to_string(p.solver_method) << "), assembly " << problem.statistics.assembly_seconds
                   << " s, solve " << problem.statistics.solve_seconds << " s" << std::endl;
 
       RunSummary summary =
         start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
-      summary.settings.insert({"solver", p.solver_method});
+      summary.settings.insert({"solver", to_string(p.solver_method)});
       summary.settings.insert({"joints", "frictionless pins (radial ties)"});
       summary.quantities = compute_quantities(problem);
       summary.quantities["time_setup"]    = problem.statistics.setup_seconds;

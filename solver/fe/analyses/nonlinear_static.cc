@@ -360,7 +360,7 @@ namespace compliant
     summary.settings.insert({"law", law.law});
     summary.settings.insert({"formulation", law.mixed ? "mixed" : "displacement"});
     summary.settings.insert({"solver", problem.linear_solver_description()});
-    summary.settings.insert({"solver_requested", context.parameters.solver_method});
+    summary.settings.insert({"solver_requested", to_string(context.parameters.solver_method)});
     summary.settings.insert({"mesh_partition", to_string(problem.mesh_partition.partition)});
     summary.settings.insert({"status", failure.empty() ? "completed" : failure});
     summary.settings.insert({"curve", curve.file});

@@ -85,7 +85,7 @@ namespace compliant
                                   "a linear static solve needs the rigid-body motion constrained");
     make_constraints();
     choose_solver_method();
-    if (solver_method != "matrix-free")
+    if (solver_method != SolverMethod::matrix_free)
       allocate_matrix();
     statistics.setup_seconds = timer.wall_time();
   }
@@ -248,7 +248,7 @@ namespace compliant
   {
     Timer timer;
     // The matrix-free solver needs only C^T f; it moves prescribed values to the right side itself.
-    const bool with_matrix = solver_method != "matrix-free";
+    const bool with_matrix = solver_method != SolverMethod::matrix_free;
     if (with_matrix)
       system_matrix = 0;
     system_rhs      = 0;

@@ -14,6 +14,7 @@
 
 #include "constraints/rigid_boundary.h"
 #include "discretization/discretization.h"
+#include "linear_algebra/solver_method.h"
 
 #include <memory>
 
@@ -96,7 +97,8 @@ namespace compliant
     // 'auto' and 'matrix-free' may skip the assembled matrix.
     bool matrix_free_allowed = false;
     // The solver actually used (Linear solver/Method with 'auto' resolved) and why, for the log.
-    std::string solver_method, solver_note;
+    SolverMethod solver_method = SolverMethod::automatic; // the one chosen
+    std::string  solver_note;
 
     dealii::PETScWrappers::MPI::SparseMatrix system_matrix;
     dealii::PETScWrappers::MPI::Vector       system_rhs;

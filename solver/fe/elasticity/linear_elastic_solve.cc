@@ -21,7 +21,7 @@ namespace compliant
   template <int dim>
   void LinearElasticProblem<dim>::choose_solver_method()
   {
-    const std::string &requested = parameters.solver_method;
+    const SolverMethod requested = parameters.solver_method;
     const bool hexahedra = triangulation.all_reference_cells_are_hyper_cube();
     const bool matrix_free_possible = hexahedra && matrix_free_allowed && rigid_boundaries.empty();
     std::string why_not;
@@ -36,31 +36,31 @@ namespace compliant
       {
         // The u-p system is a symmetric saddle point: neither the matrix-free elasticity operator
         // nor CG applies.
-        solver_method = "direct";
-        if (requested != "direct" && requested != "auto")
-          solver_note = requested + " requested, but the mixed u-p system is indefinite: using MUMPS (direct)";
-        else if (requested == "auto")
+        solver_method = SolverMethod::direct;
+        if (requested != SolverMethod::direct && requested != SolverMethod::automatic)
+          solver_note = to_string(requested) + " requested, but the mixed u-p system is indefinite: using MUMPS (direct)";
+        else if (requested == SolverMethod::automatic)
           solver_note = "auto: MUMPS for the mixed u-p (saddle-point) system";
         return;
       }
-    if (requested == "matrix-free")
+    if (requested == SolverMethod::matrix_free)
       {
-        solver_method = matrix_free_possible ? "matrix-free" : "cg-amg";
+        solver_method = matrix_free_possible ? SolverMethod::matrix_free : SolverMethod::cg_amg;
         if (!matrix_free_possible)
           solver_note = "matrix-free requested, but " + why_not + ": using cg-amg";
       }
-    else if (requested == "auto")
+    else if (requested == SolverMethod::automatic)
       {
         // Measured (cases/benchmarks): p-multigrid is fastest for degree >= 2 on hexahedra; below
         // ~3e4 DoFs MUMPS costs less than any set-up; otherwise AMG on the assembled matrix.
         if (matrix_free_possible && parameters.element_degree >= 2)
-          solver_method = "matrix-free",
+          solver_method = SolverMethod::matrix_free,
           solver_note   = "auto: matrix-free p-multigrid (degree " +
                         std::to_string(parameters.element_degree) + " to 1, AMG on degree 1)";
         else if (dof_handler.n_dofs() < 30000)
-          solver_method = "direct", solver_note = "auto: MUMPS for a small system";
+          solver_method = SolverMethod::direct, solver_note = "auto: MUMPS for a small system";
         else
-          solver_method = "cg-amg",
+          solver_method = SolverMethod::cg_amg,
           solver_note   = "auto: CG + GAMG on the assembled matrix" +
                         (why_not.empty() ? std::string(" (degree 1)") : " (" + why_not + ")");
       }
@@ -71,13 +71,13 @@ namespace compliant
   template <int dim>
   void LinearElasticProblem<dim>::require_assembled_matrix(const std::string &reason)
   {
-    if (solver_method != "matrix-free")
+    if (solver_method != SolverMethod::matrix_free)
       return;
     // The rule of 'auto' without the matrix-free operator: MUMPS below 30k DoFs (a mirror-tied plate
     // of 9.8k DoFs took 270 CG + GAMG iterations, 3.8 s), CG + GAMG above.
-    const bool small = parameters.solver_method == "auto" && dof_handler.n_dofs() < 30000;
-    solver_method    = small ? "direct" : "cg-amg";
-    solver_note      = "matrix-free not possible with " + reason + ": using " + solver_method;
+    const bool small = parameters.solver_method == SolverMethod::automatic && dof_handler.n_dofs() < 30000;
+    solver_method    = small ? SolverMethod::direct : SolverMethod::cg_amg;
+    solver_note      = "matrix-free not possible with " + reason + ": using " + to_string(solver_method);
   }
 
   template <int dim>
@@ -85,21 +85,21 @@ namespace compliant
   {
     Timer                      timer;
     PETScWrappers::MPI::Vector x(locally_owned_dofs, communicator);
-    if (solver_method == "matrix-free" && !solve_matrix_free(x))
+    if (solver_method == SolverMethod::matrix_free && !solve_matrix_free(x))
       {
         // 'auto' only: the iterative method struggled (very thin cells); MUMPS is exact.
-        solver_method = "direct";
+        solver_method = SolverMethod::direct;
         allocate_matrix();
         assemble();
       }
-    if (solver_method != "matrix-free")
+    if (solver_method != SolverMethod::matrix_free)
       {
-        const bool iterative = solver_method != "direct";
+        const bool iterative = solver_method != SolverMethod::direct;
         const auto modes     = iterative ? rigid_body_modes(*mapping, dof_handler, communicator) :
                                            std::vector<PETScWrappers::MPI::Vector>();
         LinearSolverSettings settings{solver_method, parameters.solver_tolerance,
                                       parameters.solver_max_iterations, parameters.petsc_options};
-        if (parameters.solver_method == "auto" && iterative)
+        if (parameters.solver_method == SolverMethod::automatic && iterative)
           settings.max_iterations = std::min(settings.max_iterations, 300u);
         try
           {
@@ -108,13 +108,13 @@ namespace compliant
           }
         catch (const std::runtime_error &e)
           {
-            if (parameters.solver_method != "auto" || !iterative)
+            if (parameters.solver_method != SolverMethod::automatic || !iterative)
               throw;
             solver_note += "; CG + GAMG did not converge in " +
                            std::to_string(settings.max_iterations) +
                            " iterations: solved again with MUMPS (direct)";
-            solver_method = "direct";
-            settings.method = "direct";
+            solver_method   = SolverMethod::direct;
+            settings.method = SolverMethod::direct;
             statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, {}, settings);
           }
       }
@@ -128,7 +128,7 @@ namespace compliant
   {
     fast_solver::PMultigridSettings settings;
     settings.relative_tolerance = parameters.solver_tolerance;
-    settings.max_iterations     = parameters.solver_method == "auto" ?
+    settings.max_iterations     = parameters.solver_method == SolverMethod::automatic ?
                                     std::min(parameters.solver_max_iterations, 300u) :
                                     parameters.solver_max_iterations;
     settings.petsc_options      = parameters.petsc_options;
@@ -173,7 +173,7 @@ namespace compliant
         const std::string what = "matrix-free p-multigrid did not converge in " +
                                  std::to_string(e.last_step) + " iterations (residual " +
                                  std::to_string(e.last_residual) + ")";
-        if (parameters.solver_method != "auto")
+        if (parameters.solver_method != SolverMethod::automatic)
           throw std::runtime_error(what + "; try 'Linear solver/Method = direct' or more iterations");
         solver_note += "; " + what + ": solved again with MUMPS (direct)";
         return false;

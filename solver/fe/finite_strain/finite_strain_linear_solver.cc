@@ -38,12 +38,12 @@ namespace compliant
   template <int dim>
   bool FiniteStrainProblem<dim>::matrix_free_tangent() const
   {
-    const std::string &method = parameters.solver_method;
+    const SolverMethod method = parameters.solver_method;
     // auto: measured on cases/benchmarks/flexure_finite_strain.prm, the p-multigrid halves the
     // whole run at 25k DoFs in 3D and wins more with size; MUMPS is faster on small and 2D
     // models (2D elastica, 2k DoFs: 0.4 s of solves against 0.8 s).
-    const bool wanted = method == "matrix-free" ||
-                        (method == "auto" && dim == 3 && dof_handler.n_dofs() >= auto_matrix_free_dofs);
+    const bool wanted = method == SolverMethod::matrix_free ||
+                        (method == SolverMethod::automatic && dim == 3 && dof_handler.n_dofs() >= auto_matrix_free_dofs);
     return wanted && !iterative_failed && !mixed && follower_pressures.empty() &&
            rigid_boundaries.empty() && fe->degree >= 2;
   }
@@ -51,9 +51,9 @@ namespace compliant
   template <int dim>
   std::string FiniteStrainProblem<dim>::linear_solver_description() const
   {
-    const std::string &method = parameters.solver_method;
+    const SolverMethod method = parameters.solver_method;
     std::string        why;
-    if (method == "direct")
+    if (method == SolverMethod::direct)
       why = "asked for";
     else if (mixed)
       why = "the mixed u-p tangent is indefinite";
@@ -61,19 +61,19 @@ namespace compliant
       why = "a follower pressure makes the tangent unsymmetric";
     else if (!rigid_boundaries.empty())
       why = "a rigid boundary ties its nodes together (the multigrid levels cannot)";
-    else if (fe->degree < 2 && method != "cg-amg")
+    else if (fe->degree < 2 && method != SolverMethod::cg_amg)
       why = "degree 1 has no p-multigrid levels";
-    else if (method == "auto")
+    else if (method == SolverMethod::automatic)
       why = "2D or fewer than " + std::to_string(auto_matrix_free_dofs) +
             " DoFs, where the factorization is cheaper";
     if (!iterative_failure.empty())
-      return (method == "cg-amg" ? std::string("CG + GAMG") : std::string("matrix-free p-multigrid")) +
+      return (method == SolverMethod::cg_amg ? std::string("CG + GAMG") : std::string("matrix-free p-multigrid")) +
              " until it failed (" + iterative_failure + "), then direct (MUMPS)";
     if (matrix_free_tangent())
       return "matrix-free p-multigrid on the Newton tangent (Davydov et al. 2020)";
-    if (method == "cg-amg" && dim == 3 && !rigid_boundaries.empty())
+    if (method == SolverMethod::cg_amg && dim == 3 && !rigid_boundaries.empty())
       return "direct (MUMPS) on the assembled tangent: a rigid boundary's tangent is unsymmetric in 3D";
-    if (method == "cg-amg" && !mixed)
+    if (method == SolverMethod::cg_amg && !mixed)
       return "CG + GAMG on the assembled tangent";
     return "direct (MUMPS) on the assembled tangent" + (why.empty() ? std::string() : ": " + why);
   }

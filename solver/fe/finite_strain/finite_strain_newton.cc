@@ -30,8 +30,8 @@ namespace compliant
       , rhs(p.locally_owned_dofs, p.communicator)
       , full(p.locally_owned_dofs, p.communicator)
       , ghosted(p.locally_owned_dofs, p.locally_relevant_dofs, p.communicator)
-      , direct{"direct", 1e-12, 1, p.parameters.petsc_options}
-      , amg{"cg-amg", 1e-10, 500, p.parameters.petsc_options}
+      , direct{SolverMethod::direct, 1e-12, 1, p.parameters.petsc_options}
+      , amg{SolverMethod::cg_amg, 1e-10, 500, p.parameters.petsc_options}
     {
       ghosted     = p.solution;
       homogeneous = p.make_constraints(target, true, ghosted);
@@ -40,7 +40,7 @@ namespace compliant
       // 108 s against MUMPS's 78 s (README, Speed). MUMPS again if CG fails (an indefinite
       // tangent near a limit point breaks CG); not on the unsymmetric tangent of a 3D rigid
       // boundary under a moment.
-      iterative = !p.mixed && !p.iterative_failed && p.parameters.solver_method == "cg-amg" &&
+      iterative = !p.mixed && !p.iterative_failed && p.parameters.solver_method == SolverMethod::cg_amg &&
                   !(dim == 3 && !p.rigid_boundaries.empty());
       if (iterative)
         modes = rigid_body_modes(*p.mapping, p.dof_handler, p.communicator);

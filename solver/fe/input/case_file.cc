@@ -303,7 +303,7 @@ namespace compliant
     prm.enter_subsection("Discretization");
     p.element_degree     = prm.get_integer("Element degree");
     p.global_refinements = prm.get_integer("Global refinements");
-    p.mesh_partition     = prm.get("Mesh partition");
+    p.mesh_partition     = partition_request_from_string(prm.get("Mesh partition"));
     p.curved_boundaries  = prm.get_bool("Curved boundaries");
     p.formulation        = prm.get("Formulation") == "mixed" ? Formulation::mixed : Formulation::displacement;
     prm.leave_subsection();
@@ -339,7 +339,7 @@ namespace compliant
     prm.leave_subsection();
 
     prm.enter_subsection("Linear solver");
-    p.solver_method         = prm.get("Method");
+    p.solver_method         = solver_method_from_string(prm.get("Method"));
     p.solver_tolerance      = prm.get_double("Relative tolerance");
     p.solver_max_iterations = prm.get_integer("Maximum iterations");
     p.petsc_options         = prm.get("PETSc options");

@@ -5,7 +5,9 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include "input/imperfection_spec.h"
+#include "linear_algebra/solver_method.h"
 #include "mesh/gmsh_geometry.h"
+#include "mesh/partition_request.h"
 
 #include <functional>
 #include <map>
@@ -51,7 +53,7 @@ namespace compliant
 
     unsigned int element_degree     = 2;
     unsigned int global_refinements = 0;
-    std::string  mesh_partition     = "auto"; // auto, shared, distributed
+    PartitionRequest mesh_partition = PartitionRequest::automatic;
     bool         curved_boundaries  = true;   // circles, cylinders, spheres follow the geometry
     Formulation  formulation        = Formulation::displacement; // linear analyses
     // Local refinements after the global ones, one set of refine flags (per active cell) per
@@ -66,7 +68,7 @@ namespace compliant
     std::string traction, total_force, body_force, gravity;
     std::string pressure; // 'boundary: p' on the undeformed normal (linear analyses)
 
-    std::string solver_method;
+    SolverMethod solver_method = SolverMethod::automatic;
     double      solver_tolerance = 1e-10;
     unsigned    solver_max_iterations = 1000;
     std::string petsc_options;

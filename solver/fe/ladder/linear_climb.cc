@@ -117,7 +117,7 @@ namespace compliant
   std::optional<int> LadderClimb<dim>::climb_linear()
   {
     // Kelly's refine flags are computed over the whole mesh: adaptive rungs share it.
-    if (target.adaptive && p.mesh_partition == "distributed")
+    if (target.adaptive && p.mesh_partition == PartitionRequest::distributed)
       throw InputError("case file '" + p.case_file + "': Discretization/Mesh partition = "
                        "distributed is not possible with Target/Refinement = adaptive (the "
                        "refine flags cover the whole mesh); use shared or auto");
@@ -130,7 +130,7 @@ namespace compliant
         rung_parameters->element_degree = plan.degree;
         if (target.adaptive)
           {
-            rung_parameters->mesh_partition       = "shared";
+            rung_parameters->mesh_partition       = PartitionRequest::shared;
             rung_parameters->adaptive_refinements = adaptive_refinements;
           }
         else
@@ -263,7 +263,7 @@ namespace compliant
                                     context.communicator};
     const auto &problem = *chosen.problem;
     RunSummary  summary = start_summary(chosen_context, problem.triangulation.all_reference_cells_are_hyper_cube());
-    summary.settings.insert({"solver", problem.solver_method});
+    summary.settings.insert({"solver", to_string(problem.solver_method)});
     summary.settings.insert({"ladder", met                ? "target met" :
                                        too_large.empty() ? "target not met" :
                                                            "target not met: " + too_large});

@@ -75,7 +75,7 @@ namespace compliant
     check(KSPCreate(comm, &ksp), "KSPCreate");
     check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
     check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    if (settings.method == "direct")
+    if (settings.method == SolverMethod::direct)
       {
         check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
         check(PCSetType(pc, PCLU), "PCSetType");
@@ -101,7 +101,7 @@ namespace compliant
     KSPGetIterationNumber(ksp, &iterations);
     KSPDestroy(&ksp);
     if (reason < 0)
-      throw std::runtime_error("linear solver (" + settings.method + ") did not converge: PETSc "
+      throw std::runtime_error("linear solver (" + to_string(settings.method) + ") did not converge: PETSc "
                                "reason " + std::to_string(reason) + " after " +
                                std::to_string(iterations) + " iterations; try 'Linear "
                                "solver/Method = direct' or more iterations");

@@ -7,6 +7,8 @@
 
 #include <petscpc.h>
 
+#include "linear_algebra/solver_method.h"
+
 #include <string>
 #include <vector>
 
@@ -14,7 +16,7 @@ namespace compliant
 {
   struct LinearSolverSettings
   {
-    std::string method = "cg-amg"; // or "direct"
+    SolverMethod method = SolverMethod::cg_amg; // or direct
     double      relative_tolerance = 1e-10;
     unsigned    max_iterations     = 2000;
     std::string petsc_options;

@@ -16,13 +16,25 @@ namespace compliant
     return dim * cells * std::pow(static_cast<double>(degree), dim);
   }
 
-  MeshPartitionChoice choose_mesh_partition(const std::string &requested, const double estimated_dofs,
+  PartitionRequest partition_request_from_string(const std::string &text)
+  {
+    if (text == "auto")
+      return PartitionRequest::automatic;
+    if (text == "shared")
+      return PartitionRequest::shared;
+    if (text == "distributed")
+      return PartitionRequest::distributed;
+    throw std::invalid_argument("Discretization/Mesh partition: expected auto, shared or "
+                                "distributed, got '" + text + "'");
+  }
+
+  MeshPartitionChoice choose_mesh_partition(const PartitionRequest requested, const double estimated_dofs,
                                             const unsigned int n_ranks,
                                             const std::string &whole_mesh_reason)
   {
-    if (requested == "shared")
+    if (requested == PartitionRequest::shared)
       return {MeshPartition::shared, ""};
-    if (requested == "distributed")
+    if (requested == PartitionRequest::distributed)
       {
         if (!whole_mesh_reason.empty())
           throw std::invalid_argument("Discretization/Mesh partition = distributed is not possible: " +
@@ -32,9 +44,6 @@ namespace compliant
           return {MeshPartition::shared, "one rank holds the whole mesh anyway"};
         return {MeshPartition::distributed, ""};
       }
-    if (requested != "auto")
-      throw std::invalid_argument("Discretization/Mesh partition: expected auto, shared or "
-                                  "distributed, got '" + requested + "'");
     if (n_ranks > 1 && estimated_dofs >= auto_distributed_dofs)
       {
         if (!whole_mesh_reason.empty())

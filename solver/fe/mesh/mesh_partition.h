@@ -6,6 +6,8 @@
 
 #include <deal.II/distributed/tria_base.h>
 
+#include "mesh/partition_request.h"
+
 #include <memory>
 #include <string>
 
@@ -23,11 +25,11 @@ namespace compliant
     std::string   note; // why, for the log ("" when nothing to say)
   };
 
-  // From 'Discretization/Mesh partition' (auto, shared, distributed). 'auto' distributes from
+  // From 'Discretization/Mesh partition'. 'auto' distributes from
   // auto_distributed_dofs estimated DoFs on more than one rank. whole_mesh_reason is non-empty
   // when the analysis needs the whole mesh on every rank (says what for): then 'distributed' is
   // refused (std::invalid_argument) and 'auto' shares.
-  MeshPartitionChoice choose_mesh_partition(const std::string &requested, double estimated_dofs,
+  MeshPartitionChoice choose_mesh_partition(PartitionRequest requested, double estimated_dofs,
                                             unsigned int n_ranks,
                                             const std::string &whole_mesh_reason);
   constexpr double auto_distributed_dofs = 2e5;

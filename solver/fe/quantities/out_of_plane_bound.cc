@@ -105,7 +105,7 @@ namespace compliant
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
     LinearSolverSettings settings;
-    settings.method = "direct";
+    settings.method = SolverMethod::direct;
     solve_linear_system(matrix, psi, rhs, {}, settings);
     constraints.distribute(psi);
     PETScWrappers::MPI::Vector psi_ghosted(owned, relevant, comm);
