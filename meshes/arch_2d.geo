@@ -7,6 +7,11 @@ DefineConstant[ t = {1, Name "Parameters/t", Help "thickness"} ];
 DefineConstant[ n = {40, Name "Parameters/n", Help "cells along each half of the arch"} ];
 DefineConstant[ nt = {2, Name "Parameters/nt", Help "cells through the thickness"} ];
 DefineConstant[ apex = {0.02, Name "Parameters/apex", Help "half-angle of the loaded crown piece (rad)"} ];
+If (S <= 0 || h <= 0 || h > S / 2 || t <= 0 || t * h >= S * S / 4 + h * h ||
+    n < 1 || nt < 1 || apex <= 0 || apex >= Asin(S * h / (S * S / 4 + h * h)))
+  Error("arch_2d.geo: need S > 0, 0 < h <= S/2, 0 < t < 2 R (R = (S^2/4 + h^2) / (2 h), the radius of the centre line), 0 < apex < the half-angle Asin(S / (2 R)) of the arch, n >= 1 and nt >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 R = (S * S / 4 + h * h) / (2 * h);
 beta = Asin(S / (2 * R));
 Point(1) = {0, h - R, 0};

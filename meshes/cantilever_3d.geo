@@ -7,6 +7,10 @@ DefineConstant[ ny = {4, Name "Parameters/ny", Help "elements along y"} ];
 DefineConstant[ nz = {4, Name "Parameters/nz", Help "elements along z"} ];
 DefineConstant[ hexes = {1, Name "Parameters/hexes", Help "1: structured hexahedra, 0: unstructured tetrahedra"} ];
 DefineConstant[ nx = {0, Name "Parameters/nx", Help "elements along x; 0: about square cells (ny L/H)"} ];
+If (L <= 0 || H <= 0 || W <= 0 || ny < 1 || nz < 1 || (nx != 0 && nx < 1))
+  Error("cantilever_3d.geo: need L, H, W > 0, ny, nz >= 1 and nx >= 1 (or nx = 0: about square cells)");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 n_x = (nx > 0) ? nx : Ceil(ny * L / H);
 Point(1) = {0, -H/2, -W/2}; Point(2) = {0, H/2, -W/2}; Point(3) = {0, H/2, W/2}; Point(4) = {0, -H/2, W/2};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};

@@ -27,8 +27,9 @@ DefineConstant[ hb = {6, Name "Parameters/hb", Help "cell length along the arm a
 r = rf * t;
 a = lk / 2 + r;      // pole to body face, along the flexure axis
 R = c * Sqrt((Sx - Px) ^ 2 + (Sy - Py) ^ 2);
-If (c <= 0 || lk <= 0 || t <= 0 || W <= t + 2 * r || Lg <= 0 || R <= a + W)
-  Error("compliant_pivot_arm.geo: need c, lk, t, Lg > 0, W > t (1 + 2 rf) and the spar farther from the pole than lk/2 + rf t + W");
+If (c <= 0 || lk <= 0 || t <= 0 || rf < 0 || W <= t + 2 * r || Lg <= 0 || R <= a + W || nt < 1 || hb <= 0)
+  Error("compliant_pivot_arm.geo: need c, lk, t, Lg, hb > 0, rf >= 0, W > t (1 + 2 rf), nt >= 1 and the spar farther from the pole than lk/2 + rf t + W");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
 px = c * Px; py = c * Py;
 ux = c * (Sx - Px) / R; uy = c * (Sy - Py) / R; nx = uy; ny = -ux;

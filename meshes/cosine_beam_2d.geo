@@ -11,6 +11,10 @@ DefineConstant[ imp = {1e-4, Name "Parameters/imp", Help "antisymmetric imperfec
 DefineConstant[ n = {50, Name "Parameters/n", Help "cells along each half of the beam"} ];
 DefineConstant[ nt = {2, Name "Parameters/nt", Help "cells through the thickness"} ];
 DefineConstant[ a = {1, Name "Parameters/a", Help "half-width of the driven piece at the centre"} ];
+If (L <= 0 || t <= 0 || a <= 0 || a >= L / 2 || n < 1 || nt < 1)
+  Error("cosine_beam_2d.geo: need L > 0, t > 0, 0 < a < L/2 (the driven piece inside the span), n >= 1 and nt >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 m = 40; // spline points per piece
 xs[] = {0, L/2 - a, L/2 + a, L};
 For side In {0:1}

@@ -15,8 +15,9 @@ DefineConstant[ n = {50, Name "Parameters/n", Help "cells along each half of a b
 DefineConstant[ nt = {2, Name "Parameters/nt", Help "cells through a beam's thickness"} ];
 DefineConstant[ a = {1, Name "Parameters/a", Help "half-width of the tying block"} ];
 DefineConstant[ nb = {6, Name "Parameters/nb", Help "cells over the block's height"} ];
-If (g <= t)
-  Error("g = %g must exceed t = %g: the beams would overlap", g, t);
+If (L <= 0 || t <= 0 || g <= t || a <= 0 || a >= L / 2 || n < 1 || nt < 1 || nb < 1)
+  Error("cosine_double_beam_2d.geo: need L > 0, 0 < t < g (g = %g, t = %g: the beams must not overlap), 0 < a < L/2 (the block inside the span), n, nt, nb >= 1", g, t);
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
 m = 40; // spline points per piece
 xs[] = {0, L/2 - a, L/2 + a, L};

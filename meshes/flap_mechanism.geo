@@ -25,8 +25,9 @@ DefineConstant[ hb = {2, Name "Parameters/hb", Help "cell size in the link bodie
 
 r = rf * t;          // fillet radius
 a = lk / 2 + r;      // pivot to body face, along the flexure axis
-If (lk <= 0 || t <= 0 || W <= t + 2 * r || 2 * a >= L2 || 2 * a >= L4)
-  Error("flap_mechanism.geo: need lk > 0, t > 0, W > t (1 + 2 rf) and lk + 2 rf t below the crank and rocker lengths");
+If (lk <= 0 || t <= 0 || rf < 0 || W <= t + 2 * r || 2 * a >= L2 || 2 * a >= L4 || L1 <= 0 || L3 <= 0 || nt < 1 || hb <= 0)
+  Error("flap_mechanism.geo: need lk > 0, t > 0, rf >= 0, W > t (1 + 2 rf), lk + 2 rf t below the crank and rocker lengths L2, L4, L1 > 0, L3 > 0, nt >= 1 and hb > 0");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
 
 // Pivots and link directions (u along the flexure axis, n = u turned by -90 deg).
@@ -36,6 +37,7 @@ dx = L1 - Bx; dy = -By; d = Sqrt(dx * dx + dy * dy);
 aa = (L3 * L3 - L4 * L4 + d * d) / (2 * d);
 If (L3 * L3 - aa * aa < 0)
   Error("flap_mechanism.geo: the loop cannot be closed at crank0 = %g deg", crank0);
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
 hh = Sqrt(L3 * L3 - aa * aa);
 c1x = Bx + aa * dx / d - hh * dy / d; c1y = By + aa * dy / d + hh * dx / d;

@@ -7,6 +7,10 @@ DefineConstant[ t = {1, Name "Parameters/t", Help "flexure thickness (bending de
 DefineConstant[ Ll = {20, Name "Parameters/Ll", Help "length of each link"} ];
 DefineConstant[ T = {10, Name "Parameters/T", Help "link thickness"} ];
 DefineConstant[ nt = {2, Name "Parameters/nt", Help "elements through the flexure thickness"} ];
+If (l <= 0 || Ll <= 0 || t <= 0 || t >= T || nt < 1)
+  Error("flexure_hinge_2d.geo: need l > 0, Ll > 0, 0 < t < T and nt >= 1 (lengths and thicknesses must be positive, the flexure thinner than the links)");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 // Cells about square in the flexure; the links are meshed coarser.
 nl = Ceil(nt * l / t);
 nT = Ceil(nt * (T - t) / (2 * t) / 4) + 1;

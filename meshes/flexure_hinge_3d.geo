@@ -10,6 +10,10 @@ DefineConstant[ T = {10, Name "Parameters/T", Help "link thickness"} ];
 DefineConstant[ nt = {2, Name "Parameters/nt", Help "elements through the flexure thickness"} ];
 DefineConstant[ b = {5, Name "Parameters/b", Help "width along z (the 2D model's thickness)"} ];
 DefineConstant[ nb = {2, Name "Parameters/nb", Help "elements across the width"} ];
+If (l <= 0 || Ll <= 0 || t <= 0 || t >= T || nt < 1 || b <= 0 || nb < 1)
+  Error("flexure_hinge_3d.geo: need l > 0, Ll > 0, 0 < t < T, b > 0, nt >= 1 and nb >= 1 (lengths and thicknesses must be positive, the flexure thinner than the links)");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 // Cells about square in the flexure; the links are meshed coarser.
 nl = Ceil(nt * l / t);
 nT = Ceil(nt * (T - t) / (2 * t) / 4) + 1;

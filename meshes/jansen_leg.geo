@@ -40,6 +40,11 @@ DefineConstant[ DF = {197, Name "Parameters/DF", Help "r7, mm"} ];
 DefineConstant[ FG = {183, Name "Parameters/FG", Help "r8, mm"} ];
 DefineConstant[ GH = {245, Name "Parameters/GH", Help "r8', mm"} ];
 DefineConstant[ FH = {328, Name "Parameters/FH", Help "r8'', mm"} ];
+If (w <= 0 || rp <= 0 || rp >= w / 2 || rho <= 0 || lc <= 0 || n_eye < 1 || t <= 0 ||
+    EA <= 0 || AB <= 0 || BC <= 0 || BG <= 0 || CE <= 0 || DE <= 0 || CD <= 0 || EG <= 0 || DF <= 0 || FG <= 0 || GH <= 0 || FH <= 0)
+  Error("jansen_leg.geo: need 0 < rp < w/2 (the eyes inside the bars' round ends), rho > 0, lc > 0, n_eye >= 1, t > 0 and every link length (EA, AB, BC, BG, CE, DE, CD, EG, DF, FG, GH, FH) > 0");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 R = w / 2;
 // Coincident pin and eye circles must stay separate curves. The plane model switches gmsh's
 // merging of duplicate entities off; the extrusion of the solid needs it on, so there every body
@@ -54,6 +59,10 @@ z_ = 0;
 Macro "CircleIntersection"
   dx_ = x2_ - x1_; dy_ = y2_ - y1_; d_ = Sqrt(dx_^2 + dy_^2);
   a_ = (r1_^2 - r2_^2 + d_^2) / (2 * d_); h_ = Sqrt(r1_^2 - a_^2);
+  If (r1_^2 - a_^2 < 0)
+    Error("jansen_leg.geo: the links cannot be assembled at theta2 = %g deg: need |r1 - r2| <= d <= r1 + r2 for the two links (r1, r2: BC, CE; BG, EG; DE, CD; DF, FG; GH, FH) that meet at a joint d away from their other ends", theta2);
+    Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+  EndIf
   xo_ = x1_ + (a_ * dx_ - side_ * h_ * dy_) / d_;
   yo_ = y1_ + (a_ * dy_ + side_ * h_ * dx_) / d_;
 Return

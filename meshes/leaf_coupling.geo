@@ -12,8 +12,13 @@ DefineConstant[ r = {8, Name "Parameters/r", Help "radius of the leaves' centres
 DefineConstant[ nb = {2, Name "Parameters/nb", Help "elements through the thickness b"} ];
 DefineConstant[ na = {0, Name "Parameters/na", Help "elements across the width a; 0: square cells (nb a / b)"} ];
 DefineConstant[ nL = {0, Name "Parameters/nL", Help "elements along L; 0: square cells (nb L / b)"} ];
+If (L <= 0 || a <= 0 || b <= 0 || nb < 1 || (na != 0 && na < 1) || (nL != 0 && nL < 1) || r <= (a + b) / 2)
+  Error("leaf_coupling.geo: need L, a, b > 0, r > (a + b)/2 (neighbouring leaves apart), nb >= 1, na and nL >= 1 (or 0: square cells)");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 If (r <= a/2 || 2 * r * Sin(Pi/4) <= a)
   Error("leaf_coupling.geo: r = %g must exceed a/2 and keep neighbouring leaves apart (a = %g)", r, a);
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
 n_a = (na > 0) ? na : Ceil(nb * a / b);
 n_L = (nL > 0) ? nL : Ceil(nb * L / b);

@@ -9,6 +9,10 @@ DefineConstant[ nb = {2, Name "Parameters/nb", Help "elements through the thickn
 DefineConstant[ na = {0, Name "Parameters/na", Help "elements across the width a; 0: square cells (nb a / b)"} ];
 DefineConstant[ aspect = {1, Name "Parameters/aspect", Help "length of a cell along the axis over b / nb (long leaves: up to about 8)"} ];
 DefineConstant[ nL = {0, Name "Parameters/nL", Help "elements along L; 0: from aspect"} ];
+If (L <= 0 || a <= 0 || b <= 0 || nb < 1 || (na != 0 && na < 1) || aspect <= 0 || (nL != 0 && nL < 1))
+  Error("leaf_spring.geo: need L, a, b > 0, nb >= 1, aspect > 0, na and nL >= 1 (or 0: automatic)");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 n_a = (na > 0) ? na : Ceil(nb * a / b);
 n_L = (nL > 0) ? nL : Ceil(nb * L / (b * aspect));
 Point(1) = {0, -a/2, -b/2}; Point(2) = {0, a/2, -b/2}; Point(3) = {0, a/2, b/2}; Point(4) = {0, -a/2, b/2};

@@ -3,6 +3,10 @@
 // hexahedra (3D). Boundaries: left, right, bottom, top (and front, back in 3D). Body: body.
 DefineConstant[ extrude = {0, Name "Parameters/extrude", Help "thickness of the 3D extrusion; 0 keeps the patch 2D"} ];
 DefineConstant[ shear = {0.01, Name "Parameters/shear", Help "extra skew of the extruded top face (3D only), to distort the hexahedra"} ];
+If (extrude < 0)
+  Error("patch_test.geo: need extrude >= 0 (0: the 2D patch, > 0: the thickness of the 3D one)");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 Point(1) = {0, 0, 0}; Point(2) = {0.24, 0, 0}; Point(3) = {0.24, 0.12, 0}; Point(4) = {0, 0.12, 0};
 Point(5) = {0.04, 0.02, 0}; Point(6) = {0.18, 0.03, 0}; Point(7) = {0.16, 0.08, 0}; Point(8) = {0.08, 0.08, 0};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};

@@ -8,6 +8,10 @@ DefineConstant[ w = {20, Name "Parameters/w", Help "bar width"} ];
 DefineConstant[ rp = {4, Name "Parameters/rp", Help "pin radius = eye radius"} ];
 DefineConstant[ lc = {4, Name "Parameters/lc", Help "mesh size"} ];
 DefineConstant[ n_eye = {4, Name "Parameters/n_eye", Help "mesh segments per quarter circle of eyes and pins"} ];
+If (rp <= 0 || rp >= w / 2 || L <= 2 * rp || lc <= 0 || n_eye < 1)
+  Error("pinned_bar_2d.geo: need 0 < rp < w/2 (the eyes inside the round ends), L > 2 rp, lc > 0 and n_eye >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 R = w / 2;
 
 // Four quarter arcs from +x, the same for the eye and the pin at one centre.

@@ -7,6 +7,10 @@ DefineConstant[ t = {1, Name "Parameters/t", Help "thickness along z"} ];
 DefineConstant[ nx = {8, Name "Parameters/nx", Help "elements along x"} ];
 DefineConstant[ ny = {8, Name "Parameters/ny", Help "elements along y"} ];
 DefineConstant[ nz = {2, Name "Parameters/nz", Help "elements through the thickness"} ];
+If (a <= 0 || b <= 0 || t <= 0 || nx < 1 || ny < 1 || nz < 1)
+  Error("plate_3d.geo: need a, b, t > 0 and nx, ny, nz >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 Point(1) = {0, 0, -t/2}; Point(2) = {a, 0, -t/2}; Point(3) = {a, b, -t/2}; Point(4) = {0, b, -t/2};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};

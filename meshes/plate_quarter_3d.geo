@@ -10,6 +10,7 @@ DefineConstant[ ny = {8, Name "Parameters/ny", Help "elements along y (over b/2)
 DefineConstant[ nz = {1, Name "Parameters/nz", Help "elements through the thickness"} ];
 If (a <= 0 || b <= 0 || t <= 0 || nx < 1 || ny < 1 || nz < 1)
   Error("plate_quarter_3d.geo: need a, b, t > 0 and nx, ny, nz >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
 Point(1) = {0, 0, -t/2}; Point(2) = {a/2, 0, -t/2}; Point(3) = {a/2, b/2, -t/2}; Point(4) = {0, b/2, -t/2};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};

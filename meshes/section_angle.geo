@@ -10,6 +10,10 @@ DefineConstant[ t = {4, Name "Parameters/t", Help "leg thickness"} ];
 DefineConstant[ r = {2, Name "Parameters/r", Help "fillet radius of the inner corner (0: sharp)"} ];
 DefineConstant[ n = {4, Name "Parameters/n", Help "elements through the thickness"} ];
 DefineConstant[ quads = {0, Name "Parameters/quads", Help "1: quadrilaterals, 0: triangles"} ];
+If (t <= 0 || t >= b1 || t >= b2 || r < 0 || r >= b1 - t || r >= b2 - t || n < 1)
+  Error("section_angle.geo: need 0 < t < b1, t < b2 (the legs longer than thick), 0 <= r < b1 - t, r < b2 - t (the fillet on the inner edges) and n >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 lc = t / n;
 X[] = {0, b1, b1, t, t, 0};
 Y[] = {0, 0, t, t, b2, b2};

@@ -11,6 +11,10 @@ DefineConstant[ tw = {4, Name "Parameters/tw", Help "web thickness"} ];
 DefineConstant[ r = {0, Name "Parameters/r", Help "fillet radius of the web-flange corners (0: sharp)"} ];
 DefineConstant[ n = {3, Name "Parameters/n", Help "elements through the thinner wall"} ];
 DefineConstant[ quads = {0, Name "Parameters/quads", Help "1: quadrilaterals, 0: triangles"} ];
+If (tw <= 0 || tw >= bf || tf <= 0 || 2 * tf >= h || r < 0 || r >= bf - tw || 2 * r >= h - 2 * tf || n < 1)
+  Error("section_channel.geo: need 0 < tw < bf, 0 < tf < h/2, 0 <= r < bf - tw, 2 r < h - 2 tf (the fillets on the inner edges) and n >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 lc = (tf < tw ? tf : tw) / n;
 X[] = {0, bf, bf, tw, tw, bf, bf, 0};
 Y[] = {0, 0, tf, tf, h - tf, h - tf, h, h};

@@ -10,6 +10,10 @@ DefineConstant[ quads = {1, Name "Parameters/quads", Help "1: structured quadril
 DefineConstant[ angle = {0, Name "Parameters/angle", Help "turn of the section about its centre (degrees)"} ];
 DefineConstant[ x0 = {0, Name "Parameters/x0", Help "x of the centre"} ];
 DefineConstant[ y0 = {0, Name "Parameters/y0", Help "y of the centre"} ];
+If (a <= 0 || b <= 0 || n < 1)
+  Error("section_rectangle.geo: need a > 0, b > 0 and n >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 h = (a < b ? a : b) / n;
 c = Cos(angle * Pi / 180); s = Sin(angle * Pi / 180);
 xs[] = {-a/2, a/2, a/2, -a/2};

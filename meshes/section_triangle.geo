@@ -7,6 +7,10 @@
 DefineConstant[ a = {10, Name "Parameters/a", Help "side"} ];
 DefineConstant[ n = {8, Name "Parameters/n", Help "elements along a side"} ];
 DefineConstant[ quads = {0, Name "Parameters/quads", Help "1: quadrilaterals, 0: triangles"} ];
+If (a <= 0 || n < 1)
+  Error("section_triangle.geo: need a > 0 and n >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 lc = a / n;
 r = 0;
 h = a * Sqrt(3) / 2;

@@ -5,6 +5,10 @@
 DefineConstant[ R = {10, Name "Parameters/R", Help "outer radius"} ];
 DefineConstant[ r = {6, Name "Parameters/r", Help "inner radius"} ];
 DefineConstant[ n = {8, Name "Parameters/n", Help "elements through the wall"} ];
+If (r <= 0 || R <= r || n < 1)
+  Error("section_tube.geo: need 0 < r < R and n >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
 SetFactory("OpenCASCADE");
 Disk(1) = {0, 0, 0, R};
 Disk(2) = {0, 0, 0, r};

@@ -9,6 +9,7 @@ DefineConstant[ nc = {8, Name "Parameters/nc", Help "cells around the quarter"} 
 DefineConstant[ quads = {1, Name "Parameters/quads", Help "1: quadrilaterals, 0: triangles"} ];
 If (a <= 0 || b <= a || nr < 1 || nc < 1)
   Error("thick_cylinder_2d.geo: need 0 < a < b, nr >= 1 and nc >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
 Point(1) = {0, 0, 0};
 Point(2) = {a, 0, 0}; Point(3) = {b, 0, 0}; Point(4) = {0, b, 0}; Point(5) = {0, a, 0};

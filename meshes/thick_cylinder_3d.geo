@@ -11,6 +11,7 @@ DefineConstant[ nz = {1, Name "Parameters/nz", Help "cells along the axis (hexah
 DefineConstant[ quads = {1, Name "Parameters/quads", Help "1: hexahedra, 0: tetrahedra"} ];
 If (a <= 0 || b <= a || h <= 0 || nr < 1 || nc < 1 || nz < 1)
   Error("thick_cylinder_3d.geo: need 0 < a < b, h > 0, nr, nc, nz >= 1");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
 Point(1) = {0, 0, 0};
 Point(2) = {a, 0, 0}; Point(3) = {b, 0, 0}; Point(4) = {0, b, 0}; Point(5) = {0, a, 0};

@@ -7,6 +7,7 @@ DefineConstant[ b = {20, Name "Parameters/b", Help "outer radius"} ];
 DefineConstant[ lc = {5, Name "Parameters/lc", Help "tetrahedron size"} ];
 If (a <= 0 || b <= a || lc <= 0)
   Error("thick_sphere_3d.geo: need 0 < a < b and lc > 0");
+  Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
 Sphere(1) = {0, 0, 0, b};
 Sphere(2) = {0, 0, 0, a};

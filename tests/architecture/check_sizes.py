@@ -13,13 +13,9 @@ import sys
 
 FUNCTION_LIMIT, FILE_LIMIT = 150, 600
 # Still over the limit (file, function): the length it may not exceed. Remove a line when its
-# function is split.
+# function is split. Empty since the last seven were split (issue 29); kept so that a function that
+# must stay long for a reason can be listed here with that reason, visibly.
 KNOWN = {
-    ("finite_strain/finite_strain_problem.cc", "FiniteStrainProblem<dim>::assemble"): 231,
-    ("quantities/quantities.cc", "compute_quantities"): 223,
-    ("discretization/boundary_conditions.cc", "resolve_boundary_conditions"): 200,
-    ("nonlinear/arc_length.h", "follow_arc_length"): 165,
-    ("elasticity/linear_elastic_problem.cc", "LinearElasticProblem<dim>::assemble"): 161,
 }
 
 

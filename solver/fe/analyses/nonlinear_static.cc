@@ -29,12 +29,8 @@ namespace compliant
     {
       using namespace dealii;
       prm.enter_subsection("Finite strain");
-      prm.declare_entry("Law", "neo-Hookean",
-                        Patterns::Selection("neo-Hookean|neo-Hookean isochoric|Mooney-Rivlin|Saint Venant-Kirchhoff"),
-                        "Hyperelastic law (compressible; small-strain limit has the material's E "
-                        "and nu). Mooney-Rivlin: W = c1 (I1-3) + c2 (I2-3) - 2(c1+2c2) ln J + "
-                        "lambda/2 (ln J)^2. neo-Hookean isochoric: W = mu/2 (J^(-2/3) I1 - 3) + "
-                        "kappa/4 (J^2 - 1 - 2 ln J) (deal.II code gallery).");
+      prm.declare_entry("Law", "neo-Hookean", Patterns::Selection(hyperelastic_law_selection()),
+                        hyperelastic_law_documentation());
       prm.declare_entry("Mooney-Rivlin ratio", "0.2", Patterns::Double(0, 0.99),
                         "c2 / (c1 + c2) of the Mooney-Rivlin law (0 is neo-Hookean).");
       prm.declare_entry("Formulation", "displacement", Patterns::Selection("displacement|mixed"),

@@ -19,6 +19,7 @@
 #include "elasticity/rigid_rotation.h"
 #include "fast_solver/elasticity_operator.h"
 #include "fast_solver/p_multigrid_solver.h"
+#include "input/expression.h"
 #include "linear_algebra/rigid_body_modes.h"
 #include "elasticity/von_mises.h"
 #include "mesh/curved_simplex_mapping.h"
@@ -64,6 +65,182 @@ namespace compliant
     private:
       const Function<dim> &displacement;
     };
+
+    template <int dim>
+    using ExpressionFields = std::map<int, std::unique_ptr<FunctionParser<dim>>>; // per boundary id
+
+    // Loads/Traction expressions, each evaluated once so that a bad one fails before assembly.
+    template <int dim>
+    ExpressionFields<dim> make_traction_fields(const std::map<int, std::vector<std::string>> &traction_fields,
+                                               const std::map<std::string, double>           &constants)
+    {
+      ExpressionFields<dim> fields;
+      for (const auto &[id, expressions] : traction_fields)
+        fields[id] = make_field_function<dim>(expressions, constants, "Loads/Traction");
+      return fields;
+    }
+
+    // Loads/Pressure expressions, likewise; the error names the boundary as the case file does.
+    template <int dim>
+    ExpressionFields<dim> make_pressure_fields(const std::map<int, std::string>    &pressures,
+                                               const std::map<std::string, double> &constants,
+                                               const std::map<std::string, int>    &boundary_ids)
+    {
+      ExpressionFields<dim> fields;
+      for (const auto &[id, expression] : pressures)
+        {
+          std::string boundary = std::to_string(id);
+          for (const auto &[name, boundary_id] : boundary_ids)
+            if (boundary_id == id)
+              boundary = name;
+          fields[id] = make_field_function<dim>({expression}, constants, "Loads/Pressure on '" + boundary + "'");
+        }
+      return fields;
+    }
+
+    // The local stiffness and loads of one cell, with the scratch every cell reuses (allocated
+    // once, outside the cell loop).
+    template <int dim>
+    class ElasticCellAssembler
+    {
+    public:
+      ElasticCellAssembler(const LinearElasticProblem<dim> &problem, bool with_matrix);
+
+      // Resets cell_matrix (lower triangle mirrored: it is symmetric) and cell_rhs to the
+      // cell's stiffness, or the mixed u-p block matrix, and its body force.
+      void add_volume_terms(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                            const Material &material, const Tensor<1, dim> &body_force);
+      // Adds tractions (constant, total force, expressions) and pressure on boundary faces.
+      void add_boundary_terms(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                              const std::map<int, Tensor<1, dim>>                  &tractions,
+                              const ExpressionFields<dim>                          &traction_fields,
+                              const ExpressionFields<dim>                          &pressure_fields);
+
+      FullMatrix<double>                   cell_matrix;
+      Vector<double>                       cell_rhs;
+      std::vector<types::global_dof_index> dofs;
+
+    private:
+      const LinearElasticProblem<dim>     &problem; // for stress(): the constitutive law in one place
+      const bool                           with_matrix, mixed;
+      const double                         thickness;
+      FEValues<dim>                        fe_values;
+      FEFaceValues<dim>                    fe_face_values;
+      const FEValuesExtractors::Vector     u;
+      const FEValuesExtractors::Scalar     pressure;
+      Vector<double>                       field_value;
+      const unsigned int                   n;
+      std::vector<SymmetricTensor<2, dim>> eps;
+      std::vector<double>                  divergence, pressure_value;
+    };
+
+    template <int dim>
+    ElasticCellAssembler<dim>::ElasticCellAssembler(const LinearElasticProblem<dim> &problem,
+                                                    const bool                       with_matrix)
+      : cell_matrix(problem.fe->n_dofs_per_cell(), problem.fe->n_dofs_per_cell())
+      , cell_rhs(problem.fe->n_dofs_per_cell())
+      , dofs(problem.fe->n_dofs_per_cell())
+      , problem(problem)
+      , with_matrix(with_matrix)
+      , mixed(problem.mixed)
+      , thickness(problem.thickness)
+      , fe_values(*problem.mapping, *problem.fe, *problem.quadrature,
+                  update_gradients | update_values | update_JxW_values)
+      , fe_face_values(*problem.mapping, *problem.fe, *problem.face_quadrature,
+                       update_values | update_JxW_values | update_quadrature_points | update_normal_vectors)
+      , u(0)
+      , pressure(problem.mixed ? dim : 0)
+      , field_value(dim)
+      , n(problem.fe->n_dofs_per_cell())
+      , eps(n)
+      , divergence(n)
+      , pressure_value(n)
+    {}
+
+    template <int dim>
+    void ElasticCellAssembler<dim>::add_volume_terms(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const Material                                       &material,
+      const Tensor<1, dim>                                 &body_force)
+    {
+      cell_matrix = 0;
+      cell_rhs    = 0;
+      fe_values.reinit(cell);
+      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+        {
+          const double JxW = fe_values.JxW(q) * thickness;
+          if (with_matrix)
+            for (unsigned int i = 0; i < n; ++i)
+              eps[i] = fe_values[u].symmetric_gradient(i, q);
+          if (with_matrix && mixed)
+            {
+              // (2 mu eps(u), eps(v)) - (p, div v) - (q, div u) - (p q) / lambda
+              const double mu = material.shear_modulus(), lambda = material.lame_lambda();
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  divergence[i]     = fe_values[u].divergence(i, q);
+                  pressure_value[i] = fe_values[pressure].value(i, q);
+                }
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j <= i; ++j)
+                  cell_matrix(i, j) += (2 * mu * (eps[i] * eps[j]) - divergence[i] * pressure_value[j] -
+                                        pressure_value[i] * divergence[j] -
+                                        pressure_value[i] * pressure_value[j] / lambda) *
+                                       JxW;
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              if (with_matrix && !mixed)
+                {
+                  double     sigma_zz;
+                  const auto sigma_i = problem.stress(eps[i], material, sigma_zz);
+                  for (unsigned int j = 0; j <= i; ++j)
+                    cell_matrix(i, j) += (sigma_i * eps[j]) * JxW;
+                }
+              cell_rhs(i) += fe_values[u].value(i, q) * body_force * JxW;
+            }
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = i + 1; j < n; ++j)
+          cell_matrix(i, j) = cell_matrix(j, i);
+    }
+
+    template <int dim>
+    void ElasticCellAssembler<dim>::add_boundary_terms(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const std::map<int, Tensor<1, dim>>                  &tractions,
+      const ExpressionFields<dim>                          &traction_fields,
+      const ExpressionFields<dim>                          &pressure_fields)
+    {
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const int  id             = cell->face(f)->boundary_id();
+            const auto t              = tractions.find(id);
+            const auto field          = traction_fields.find(id);
+            const auto pressure_field = pressure_fields.find(id);
+            if (t == tractions.end() && field == traction_fields.end() &&
+                pressure_field == pressure_fields.end())
+              continue;
+            fe_face_values.reinit(cell, f);
+            for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
+              {
+                Tensor<1, dim> traction = t != tractions.end() ? t->second : Tensor<1, dim>();
+                if (field != traction_fields.end())
+                  {
+                    field->second->vector_value(fe_face_values.quadrature_point(q), field_value);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      traction[d] += field_value[d];
+                  }
+                if (pressure_field != pressure_fields.end())
+                  traction -= pressure_field->second->value(fe_face_values.quadrature_point(q)) *
+                              fe_face_values.normal_vector(q);
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_rhs(i) += fe_face_values[u].value(i, q) * traction *
+                                 fe_face_values.JxW(q) * thickness;
+              }
+          }
+    }
   } // namespace
 
   template <int dim>
@@ -157,26 +334,13 @@ namespace compliant
       VectorTools::interpolate_boundary_values(*mapping, dofs, id, zero, constraints, displacement_mask);
     for (const auto &d : boundary_conditions.displacements)
       {
-        FunctionParser<dim> field(n_components);
-        auto                expressions = d.expressions;
+        auto expressions = d.expressions;
         expressions.resize(n_components, "0");
-        try
-          {
-            field.initialize(dim == 2 ? "x,y" : "x,y,z", expressions,
-                             parameters.geometry_parameters);
-            Vector<double> probe(n_components);
-            field.vector_value(Point<dim>(), probe); // muparser reports syntax errors here
-          }
-        catch (const std::exception &)
-          {
-            throw std::invalid_argument("Boundary conditions/Displacement: the values of '" +
-                                        d.boundary +
-                                        "' must be numbers or expressions of x, y" +
-                                        (dim == 3 ? ", z" : "") + " and geometry parameters");
-          }
+        const auto field = make_field_function<dim>(expressions, parameters.geometry_parameters,
+                                                    "Boundary conditions/Displacement of '" + d.boundary + "'");
         VectorTools::interpolate_boundary_values(*mapping, dofs, d.boundary_id,
                                                  homogeneous ? static_cast<const Function<dim> &>(zero) :
-                                                               field,
+                                                               *field,
                                                  constraints, [&] {
                                                    std::vector<bool> mask = d.mask;
                                                    mask.resize(n_components, false);
@@ -253,142 +417,29 @@ namespace compliant
       system_matrix = 0;
     system_rhs      = 0;
     external_forces = 0;
-    const auto tractions = boundary_tractions();
-    std::map<int, std::unique_ptr<FunctionParser<dim>>> traction_fields;
-    for (const auto &[id, expressions] : boundary_conditions.traction_fields)
-      {
-        traction_fields[id] = std::make_unique<FunctionParser<dim>>(dim);
-        try
-          {
-            traction_fields[id]->initialize(dim == 2 ? "x,y" : "x,y,z", expressions,
-                                            parameters.geometry_parameters);
-            Vector<double> probe(dim);
-            traction_fields[id]->vector_value(Point<dim>(), probe);
-          }
-        catch (const std::exception &)
-          {
-            throw std::invalid_argument("Loads/Traction: cannot evaluate the expressions of "
-                                        "boundary id " + std::to_string(id) +
-                                        "; use x, y, z and geometry parameters");
-          }
-      }
-    std::map<int, std::unique_ptr<FunctionParser<dim>>> pressure_fields;
-    for (const auto &[id, expression] : boundary_conditions.pressures)
-      {
-        pressure_fields[id] = std::make_unique<FunctionParser<dim>>(1);
-        try
-          {
-            pressure_fields[id]->initialize(dim == 2 ? "x,y" : "x,y,z", expression,
-                                            parameters.geometry_parameters);
-            pressure_fields[id]->value(Point<dim>());
-          }
-        catch (const std::exception &)
-          {
-            std::string boundary = std::to_string(id);
-            for (const auto &[name, boundary_id] : geometry.boundary_ids)
-              if (boundary_id == id)
-                boundary = name;
-            throw std::invalid_argument("Loads/Pressure: cannot evaluate '" + expression + "' on '" +
-                                        boundary + "'; use a number or x, y, z and geometry parameters");
-          }
-      }
+    const auto tractions       = boundary_tractions(); // collective (boundary measures)
+    const auto traction_fields = make_traction_fields<dim>(boundary_conditions.traction_fields,
+                                                           parameters.geometry_parameters);
+    const auto pressure_fields = make_pressure_fields<dim>(boundary_conditions.pressures,
+                                                           parameters.geometry_parameters,
+                                                           geometry.boundary_ids);
 
-    FEValues<dim>     fe_values(*mapping, *fe, *quadrature,
-                            update_gradients | update_values | update_JxW_values);
-    FEFaceValues<dim> fe_face_values(*mapping, *fe, *face_quadrature,
-                                     update_values | update_JxW_values |
-                                       update_quadrature_points | update_normal_vectors);
-    const FEValuesExtractors::Vector u(0);
-    Vector<double>                   field_value(dim);
-    const unsigned int               n = fe->n_dofs_per_cell();
-    FullMatrix<double>               cell_matrix(n, n);
-    Vector<double>                   cell_rhs(n);
-    std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, dim>> eps(n);
-    std::vector<double>                  divergence(n), pressure_value(n);
-    const FEValuesExtractors::Scalar     pressure(mixed ? dim : 0);
-
+    ElasticCellAssembler<dim> cells(*this, with_matrix);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_matrix = 0;
-          cell_rhs    = 0;
-          fe_values.reinit(cell);
           const Material &material = materials.at(cell->material_id());
           const auto body_force = boundary_conditions.body_force + material.density * boundary_conditions.gravity;
-          for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-            {
-              const double JxW = fe_values.JxW(q) * thickness;
-              if (with_matrix)
-                for (unsigned int i = 0; i < n; ++i)
-                  eps[i] = fe_values[u].symmetric_gradient(i, q);
-              if (with_matrix && mixed)
-                {
-                  // (2 mu eps(u), eps(v)) - (p, div v) - (q, div u) - (p q) / lambda
-                  const double mu = material.shear_modulus(), lambda = material.lame_lambda();
-                  for (unsigned int i = 0; i < n; ++i)
-                    {
-                      divergence[i]     = fe_values[u].divergence(i, q);
-                      pressure_value[i] = fe_values[pressure].value(i, q);
-                    }
-                  for (unsigned int i = 0; i < n; ++i)
-                    for (unsigned int j = 0; j <= i; ++j)
-                      cell_matrix(i, j) += (2 * mu * (eps[i] * eps[j]) - divergence[i] * pressure_value[j] -
-                                            pressure_value[i] * divergence[j] -
-                                            pressure_value[i] * pressure_value[j] / lambda) *
-                                           JxW;
-                }
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  if (with_matrix && !mixed)
-                    {
-                      double     sigma_zz;
-                      const auto sigma_i = stress(eps[i], material, sigma_zz);
-                      for (unsigned int j = 0; j <= i; ++j)
-                        cell_matrix(i, j) += (sigma_i * eps[j]) * JxW;
-                    }
-                  cell_rhs(i) += fe_values[u].value(i, q) * body_force * JxW;
-                }
-            }
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = i + 1; j < n; ++j)
-              cell_matrix(i, j) = cell_matrix(j, i);
-          for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
-              {
-                const int  id    = cell->face(f)->boundary_id();
-                const auto t     = tractions.find(id);
-                const auto field = traction_fields.find(id);
-                const auto pressure = pressure_fields.find(id);
-                if (t == tractions.end() && field == traction_fields.end() &&
-                    pressure == pressure_fields.end())
-                  continue;
-                fe_face_values.reinit(cell, f);
-                for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
-                  {
-                    Tensor<1, dim> traction = t != tractions.end() ? t->second : Tensor<1, dim>();
-                    if (field != traction_fields.end())
-                      {
-                        field->second->vector_value(fe_face_values.quadrature_point(q), field_value);
-                        for (unsigned int d = 0; d < dim; ++d)
-                          traction[d] += field_value[d];
-                      }
-                    if (pressure != pressure_fields.end())
-                      traction -= pressure->second->value(fe_face_values.quadrature_point(q)) *
-                                  fe_face_values.normal_vector(q);
-                    for (unsigned int i = 0; i < n; ++i)
-                      cell_rhs(i) += fe_face_values[u].value(i, q) * traction *
-                                     fe_face_values.JxW(q) * thickness;
-                  }
-              }
-          cell->get_dof_indices(dofs);
+          cells.add_volume_terms(cell, material, body_force);
+          cells.add_boundary_terms(cell, tractions, traction_fields, pressure_fields);
+          cell->get_dof_indices(cells.dofs);
           // C^T f: on adaptive meshes a hanging DoF's share belongs to its masters (reactions).
-          hanging_node_constraints.distribute_local_to_global(cell_rhs, dofs, external_forces);
+          hanging_node_constraints.distribute_local_to_global(cells.cell_rhs, cells.dofs, external_forces);
           if (with_matrix)
-            constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_matrix,
+            constraints.distribute_local_to_global(cells.cell_matrix, cells.cell_rhs, cells.dofs, system_matrix,
                                                    system_rhs);
           else
-            constraints.distribute_local_to_global(cell_rhs, dofs, system_rhs);
+            constraints.distribute_local_to_global(cells.cell_rhs, cells.dofs, system_rhs);
         }
     for (const auto &rigid : rigid_boundaries)
       {

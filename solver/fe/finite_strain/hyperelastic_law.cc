@@ -8,11 +8,44 @@ namespace compliant
 {
   using namespace dealii;
 
+  const std::vector<HyperelasticLawEntry> &hyperelastic_laws()
+  {
+    static const std::vector<HyperelasticLawEntry> laws = {
+      {"neo-Hookean", "W = mu/2 (I1-3) - mu ln J + lambda/2 (ln J)^2"},
+      {"neo-Hookean isochoric", "W = mu/2 (J^(-2/3) I1 - 3) + kappa/4 (J^2 - 1 - 2 ln J) (deal.II code gallery)"},
+      {"Mooney-Rivlin", "W = c1 (I1-3) + c2 (I2-3) - 2(c1+2c2) ln J + lambda/2 (ln J)^2"},
+      {"Saint Venant-Kirchhoff", "W = lambda/2 (tr E)^2 + mu E:E"}};
+    return laws;
+  }
+
+  std::string hyperelastic_law_selection()
+  {
+    std::string names;
+    for (const auto &law : hyperelastic_laws())
+      names += (names.empty() ? "" : "|") + std::string(law.name);
+    return names;
+  }
+
+  std::string hyperelastic_law_documentation()
+  {
+    std::string text = "Hyperelastic law (compressible; small-strain limit has the material's E and nu).";
+    for (const auto &law : hyperelastic_laws())
+      if (law.formula[0] != '\0')
+        text += " " + std::string(law.name) + ": " + law.formula + ".";
+    return text;
+  }
+
   HyperelasticLaw::HyperelasticLaw(const std::string &kind, const Material &material,
                                    const double mooney_rivlin_ratio)
     : svk(kind == "Saint Venant-Kirchhoff")
     , isochoric(kind == "neo-Hookean isochoric")
   {
+    bool known = false;
+    for (const auto &law : hyperelastic_laws())
+      known = known || kind == law.name;
+    if (!known)
+      throw std::invalid_argument("Finite strain/Law: unknown law '" + kind + "'; expected one of " +
+                                  hyperelastic_law_selection());
     mu                  = material.shear_modulus();
     lambda_small_strain = material.lame_lambda();
     const double ratio  = kind == "Mooney-Rivlin" ? mooney_rivlin_ratio : 0.0;

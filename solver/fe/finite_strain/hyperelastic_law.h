@@ -18,6 +18,7 @@
 #include "materials/material.h"
 
 #include <string>
+#include <vector>
 
 namespace compliant
 {
@@ -33,11 +34,22 @@ namespace compliant
     double                          log_J    = 0;
   };
 
+  // The laws offered by 'Finite strain/Law', in the order --help lists them: the selection and
+  // its documentation are made from this list, so a new law is added here (its name and formula)
+  // and as a branch of HyperelasticLaw, in this folder only.
+  struct HyperelasticLawEntry
+  {
+    const char *name;
+    const char *formula; // "" when the name says it
+  };
+  const std::vector<HyperelasticLawEntry> &hyperelastic_laws();
+  std::string hyperelastic_law_selection();     // "neo-Hookean|...", a Patterns::Selection
+  std::string hyperelastic_law_documentation(); // the entry's --help text
+
   class HyperelasticLaw
   {
   public:
-    // kind: "neo-Hookean", "neo-Hookean isochoric", "Mooney-Rivlin", "Saint Venant-Kirchhoff".
-    // mooney_rivlin_ratio =
+    // kind: a name of hyperelastic_laws() (else std::invalid_argument); mooney_rivlin_ratio =
     // c2 / (c1 + c2) in [0, 1).
     HyperelasticLaw(const std::string &kind, const Material &material, double mooney_rivlin_ratio);
 

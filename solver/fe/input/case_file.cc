@@ -314,7 +314,7 @@ namespace compliant
       throw InputError("case file '" + p.case_file + "', Material/Thickness: expected a positive "
                        "number (the out-of-plane thickness of a 2D model), got " +
                        prm.get("Thickness"));
-    p.unit_system = prm.get("Unit system");
+    p.unit_system = unit_system_from_string(prm.get("Unit system"));
     p.materials   = prm.get("Materials");
     prm.leave_subsection();
 

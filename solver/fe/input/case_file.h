@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include "input/imperfection_spec.h"
+#include "input/unit_system.h"
 #include "linear_algebra/solver_method.h"
 #include "mesh/gmsh_geometry.h"
 #include "mesh/partition_request.h"
@@ -61,7 +62,7 @@ namespace compliant
     std::vector<std::vector<bool>> adaptive_refinements;
 
     double      thickness = 1.0;
-    std::string unit_system;
+    UnitSystem  unit_system = UnitSystem::si;
     std::string materials;
 
     std::string clamped, displacement, rotation, rigid;

@@ -42,9 +42,9 @@ namespace compliant
 
   namespace
   {
-    Material to_unit_system(Material m, const std::string &unit_system)
+    Material to_unit_system(Material m, const UnitSystem unit_system)
     {
-      if (unit_system == "mm-N-MPa")
+      if (unit_system == UnitSystem::mm_n_mpa)
         {
           m.youngs_modulus *= 1e-6; // Pa -> MPa
           m.yield_strength *= 1e-6;
@@ -56,7 +56,7 @@ namespace compliant
 
   std::map<int, Material> assign_materials(const std::string                &spec,
                                            const std::map<std::string, int> &bodies,
-                                           const std::string                &unit_system)
+                                           const UnitSystem                  unit_system)
   {
     const std::string where   = "Material/Materials";
     const auto        library = read_material_library(default_material_library());

@@ -1,6 +1,8 @@
 // Isotropic linear elastic materials: the library data file and the case's per-body choice.
 #pragma once
 
+#include "input/unit_system.h"
+
 #include <map>
 #include <string>
 #include <vector>
@@ -29,10 +31,10 @@ namespace compliant
 
   // Resolves 'body: library_name [, E=..., nu=..., density=..., yield=...]; ...' against the
   // mesh's bodies. '*' applies to every body not named otherwise. Values are converted from SI to
-  // the unit system ("SI" or "mm-N-MPa"). Throws std::invalid_argument naming the entry.
+  // the case's unit system. Throws std::invalid_argument naming the entry.
   std::map<int, Material> assign_materials(const std::string                &spec,
                                            const std::map<std::string, int> &bodies,
-                                           const std::string                &unit_system);
+                                           UnitSystem                        unit_system);
 
   std::string material_library_documentation();
 

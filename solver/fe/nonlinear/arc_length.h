@@ -229,6 +229,30 @@ namespace compliant
       throw StepFailure("no convergence in " + std::to_string(settings.max_iterations) + " iterations (residual " +
                         std::to_string(report.residual) + ")");
     }
+    // A step that passes the end load factor is replaced by the state at it exactly, corrected from
+    // the interpolated one (true). If Newton fails there, the step past the end is kept, linearized
+    // again (its linearization must be the last one) and a warning says so (false).
+    template <typename VectorType>
+    bool land_on_end(ContinuationSystem<VectorType> &system, const VectorType &u, const double lambda, double &dl,
+                     VectorType &trial, VectorType &increment, VectorType &correction, VectorType &load_correction,
+                     NewtonReport &report, const ArcLengthSettings &settings, std::string &warning)
+    {
+      const double fraction = (settings.end_load_factor - lambda) / dl;
+      VectorType   at_end   = trial; // linearized there
+      system.add_correction(at_end, fraction - 1, increment);
+      if (solve_at_load(system, at_end, settings.end_load_factor, settings, correction, load_correction, report))
+        {
+          trial     = at_end;
+          increment = at_end;
+          system.add(increment, -1, u);
+          dl = settings.end_load_factor - lambda;
+          return true;
+        }
+      system.linearize(trial, lambda + dl);
+      warning = "the path ends at load factor " + std::to_string(lambda + dl) + ", past " +
+                std::to_string(settings.end_load_factor) + ": Newton at exactly that load factor did not converge";
+      return false;
+    }
   } // namespace arc_length_detail
 
   // Follows the path from the converged state (u, lambda), which is updated step by step. on_step
@@ -311,33 +335,13 @@ namespace compliant
               break;
             continue;
           }
-        // A step past the end load factor: the state at it exactly, from the interpolated one.
         bool reached_end = false;
         int  unstable_after;
         try
           {
             if (lambda + dl >= settings.end_load_factor && lambda < settings.end_load_factor)
-              {
-                const double fraction = (settings.end_load_factor - lambda) / dl;
-                VectorType   at_end   = trial; // linearized there
-                system.add_correction(at_end, fraction - 1, increment);
-                if (arc_length_detail::solve_at_load(system, at_end, settings.end_load_factor, settings, correction,
-                                                     load_correction, report))
-                  {
-                    trial     = at_end;
-                    increment = at_end;
-                    system.add(increment, -1, u);
-                    dl          = settings.end_load_factor - lambda;
-                    reached_end = true;
-                  }
-                else // keep the step past the end; its linearization must be the last one
-                  {
-                    system.linearize(trial, lambda + dl);
-                    result.warning = "the path ends at load factor " + std::to_string(lambda + dl) +
-                                     ", past " + std::to_string(settings.end_load_factor) +
-                                     ": Newton at exactly that load factor did not converge";
-                  }
-              }
+              reached_end = arc_length_detail::land_on_end(system, u, lambda, dl, trial, increment, correction,
+                                                           load_correction, report, settings, result.warning);
             // The candidate's tangent (the next predictor) and inertia, from one factorization.
             unstable_after = system.solve(correction, candidate_tangent);
           }

@@ -131,208 +131,248 @@ namespace compliant
       return locations;
     }
 
-  } // namespace
+    template <int dim>
+    using DofLocations = std::map<types::global_dof_index, DofLocation<dim>>;
 
-  template <class Problem>
-  void validate_quantity_requests(const Problem &problem)
-  {
-    const auto &p = problem.parameters;
-    constexpr int dim = Problem::dimension;
-    for (const auto &[name, point] : requested_points<dim>(p))
-      {
-        bool found = false;
-        point_displacement(problem, point, found);
-        if (!found)
-          throw std::invalid_argument("Quantities/Points: point '" + name +
-                                      "' lies outside the mesh");
-      }
-    for (const auto &[name, point] : reaction_points<dim>(p))
-      boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Reactions");
-    for (const auto &name : names_in(p.mean_displacements))
-      boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Mean displacements");
-    for (const auto &name : names_in(p.rotations))
-      boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Rotations");
-    validate_region_maxima(problem);
-    validate_point_stresses(problem);
-  }
+    // Displacement DoFs on the boundary with this id (a mixed element's pressure has none).
+    template <class Problem>
+    IndexSet boundary_displacement_dofs(const Problem &problem, const int id)
+    {
+      const ComponentMask displacement_mask =
+        problem.fe->component_mask(FEValuesExtractors::Vector(0));
+      return DoFTools::extract_boundary_dofs(problem.dof_handler, displacement_mask,
+                                             {static_cast<types::boundary_id>(id)});
+    }
 
-  template <class Problem>
-  Quantities compute_quantities(const Problem &problem)
-  {
-    constexpr int dim = Problem::dimension;
-    Quantities  q;
-    const auto &p    = problem.parameters;
-    const auto &bc   = problem.boundary_conditions;
-    MPI_Comm    comm = problem.communicator;
+    template <class Problem>
+    void add_mesh_sizes(const Problem &problem, Quantities &q)
+    {
+      q["n_dofs"]            = problem.dof_handler.n_dofs();
+      q["n_cells"]           = problem.triangulation.n_global_active_cells();
+      q["n_ranks"]           = Utilities::MPI::n_mpi_processes(problem.communicator);
+    }
 
-    q["n_dofs"]            = problem.dof_handler.n_dofs();
-    q["n_cells"]           = problem.triangulation.n_global_active_cells();
-    q["n_ranks"]           = Utilities::MPI::n_mpi_processes(comm);
+    // Displacement at each point of Quantities/Points.
+    template <class Problem, int dim = Problem::dimension>
+    void add_point_displacements(const Problem &problem, Quantities &q)
+    {
+      for (const auto &[name, point] : requested_points<dim>(problem.parameters))
+        {
+          bool       found;
+          const auto u = point_displacement(problem, point, found);
+          for (unsigned int d = 0; d < dim; ++d)
+            q["displacement_" + name + "_" + axis_name[d]] = u[d];
+        }
+    }
 
-    for (const auto &[name, point] : requested_points<dim>(p))
-      {
-        bool       found;
-        const auto u = point_displacement(problem, point, found);
-        for (unsigned int d = 0; d < dim; ++d)
-          q["displacement_" + name + "_" + axis_name[d]] = u[d];
-      }
+    // A boundary whose reactions are reported, and the point their moment is taken about.
+    struct ReactionBoundary
+    {
+      std::string name;
+      int         id;
+      Point<3>    moment_point;
+    };
 
-    const ComponentMask displacement_mask =
-      problem.fe->component_mask(FEValuesExtractors::Vector(0));
+    // Every supported boundary: clamped, driven, then the others named in Quantities/Reactions.
+    // The moment point is the rotation center for driven rotations, else the one given in
+    // Quantities/Reactions, else the origin.
+    template <class Problem, int dim = Problem::dimension>
+    std::vector<ReactionBoundary> reaction_boundaries(const Problem &problem)
+    {
+      const auto &p  = problem.parameters;
+      const auto &bc = problem.boundary_conditions;
+      auto        moment_points = reaction_points<dim>(p);
+      std::vector<std::pair<std::string, int>> supported = bc.clamped;
+      for (const auto &d : bc.displacements)
+        supported.emplace_back(d.boundary, d.boundary_id);
+      for (const auto &r : bc.rotations)
+        {
+          supported.emplace_back(r.boundary, r.boundary_id);
+          moment_points[r.boundary] = r.center;
+        }
+      for (const auto &[name, point] : reaction_points<dim>(p))
+        if (std::find_if(supported.begin(), supported.end(),
+                         [&](const auto &s) { return s.first == name; }) == supported.end())
+          supported.emplace_back(name, problem.geometry.boundary_ids.at(name));
 
-    // Reactions on every supported boundary; the moment point is the rotation center for
-    // driven rotations, else the one given in Quantities/Reactions, else the origin.
-    const auto residual  = problem.reaction_forces();
-    const auto locations = owned_dof_locations(problem);
-    auto       moment_points = reaction_points<dim>(p);
-    std::vector<std::pair<std::string, int>> supported = bc.clamped;
-    for (const auto &d : bc.displacements)
-      supported.emplace_back(d.boundary, d.boundary_id);
-    for (const auto &r : bc.rotations)
-      {
-        supported.emplace_back(r.boundary, r.boundary_id);
-        moment_points[r.boundary] = r.center;
-      }
-    for (const auto &[name, point] : reaction_points<dim>(p))
-      if (std::find_if(supported.begin(), supported.end(),
-                       [&](const auto &s) { return s.first == name; }) == supported.end())
-        supported.emplace_back(name, problem.geometry.boundary_ids.at(name));
+      // Duplicates are kept: a boundary listed twice is reported twice, with the same values.
+      std::vector<ReactionBoundary> boundaries;
+      for (const auto &[name, id] : supported)
+        boundaries.push_back(
+          {name, id, moment_points.count(name) ? moment_points[name] : Point<3>()});
+      return boundaries;
+    }
 
-    std::map<std::string, Tensor<1, 3>> moments;
-    for (const auto &[name, id] : supported)
-      {
-        const IndexSet boundary_dofs =
-          DoFTools::extract_boundary_dofs(problem.dof_handler, displacement_mask,
-                                          {static_cast<types::boundary_id>(id)});
-        Tensor<1, 3> force, moment;
-        const Point<3> x0 = moment_points.count(name) ? moment_points[name] : Point<3>();
-        for (const auto &[dof, location] : locations)
-          if (boundary_dofs.is_element(dof))
-            {
-              Tensor<1, 3> f, r;
-              f[location.component] = residual[dof];
-              // moments about the deformed positions in a geometrically nonlinear analysis
-              const Point<dim> &x = problem.geometrically_nonlinear ? location.current : location.reference;
-              for (unsigned int d = 0; d < dim; ++d)
-                r[d] = x[d] - x0[d];
-              force += f;
-              moment += cross_product_3d(r, f);
-            }
-        force  = Utilities::MPI::sum(force, comm);
-        moment = Utilities::MPI::sum(moment, comm);
-        moments[name] = moment;
-        for (unsigned int d = 0; d < dim; ++d)
-          q["reaction_force_" + name + "_" + axis_name[d]] = force[d];
-        if (dim == 2)
-          q["reaction_moment_" + name + "_z"] = moment[2];
-        else
-          for (unsigned int d = 0; d < 3; ++d)
-            q["reaction_moment_" + name + "_" + axis_name[d]] = moment[d];
-      }
-    for (const auto &r : bc.rotations)
-      q["rotational_stiffness_" + r.boundary] =
-        (moments[r.boundary] * r.axis) / (problem.load_factor * r.angle);
-    for (const auto &d : bc.displacements)
-      for (unsigned int c = 0; c < dim; ++c)
-        if (d.is_constant && d.mask[c] && d.values[c] != 0)
-          q["stiffness_" + d.boundary + "_" + axis_name[c]] =
-            q["reaction_force_" + d.boundary + "_" + axis_name[c]] / (problem.load_factor * d.values[c]);
+    // Reaction force and moment on every supported boundary, from the residual at its DoFs.
+    // Returns the moments by boundary, for the rotational stiffnesses.
+    template <class Problem, int dim = Problem::dimension>
+    std::map<std::string, Tensor<1, 3>> add_reactions(const Problem                     &problem,
+                                                      const PETScWrappers::MPI::Vector &residual,
+                                                      const DofLocations<dim>          &locations,
+                                                      Quantities                       &q)
+    {
+      std::map<std::string, Tensor<1, 3>> moments;
+      for (const auto &[name, id, x0] : reaction_boundaries(problem))
+        {
+          const IndexSet boundary_dofs = boundary_displacement_dofs(problem, id);
+          Tensor<1, 3>   force, moment;
+          for (const auto &[dof, location] : locations)
+            if (boundary_dofs.is_element(dof))
+              {
+                Tensor<1, 3> f, r;
+                f[location.component] = residual[dof];
+                // moments about the deformed positions in a geometrically nonlinear analysis
+                const Point<dim> &x = problem.geometrically_nonlinear ? location.current : location.reference;
+                for (unsigned int d = 0; d < dim; ++d)
+                  r[d] = x[d] - x0[d];
+                force += f;
+                moment += cross_product_3d(r, f);
+              }
+          force  = Utilities::MPI::sum(force, problem.communicator);
+          moment = Utilities::MPI::sum(moment, problem.communicator);
+          moments[name] = moment;
+          for (unsigned int d = 0; d < dim; ++d)
+            q["reaction_force_" + name + "_" + axis_name[d]] = force[d];
+          if (dim == 2)
+            q["reaction_moment_" + name + "_z"] = moment[2];
+          else
+            for (unsigned int d = 0; d < 3; ++d)
+              q["reaction_moment_" + name + "_" + axis_name[d]] = moment[d];
+        }
+      return moments;
+    }
+
+    // Stiffness of each driven boundary: its reaction over the applied rotation or displacement.
+    // Needs the reactions in q and their moments (every driven rotation is a supported boundary).
+    template <class Problem, int dim = Problem::dimension>
+    void add_stiffnesses(const Problem                             &problem,
+                         const std::map<std::string, Tensor<1, 3>> &moments,
+                         Quantities                                &q)
+    {
+      const auto &bc = problem.boundary_conditions;
+      for (const auto &r : bc.rotations)
+        q["rotational_stiffness_" + r.boundary] =
+          (moments.at(r.boundary) * r.axis) / (problem.load_factor * r.angle);
+      for (const auto &d : bc.displacements)
+        for (unsigned int c = 0; c < dim; ++c)
+          if (d.is_constant && d.mask[c] && d.values[c] != 0)
+            q["stiffness_" + d.boundary + "_" + axis_name[c]] =
+              q["reaction_force_" + d.boundary + "_" + axis_name[c]] / (problem.load_factor * d.values[c]);
+    }
 
     // Mean displacement over a boundary (surface average).
-    for (const auto &name : names_in(p.mean_displacements))
-      {
-        const int         id = problem.geometry.boundary_ids.at(name);
-        FEFaceValues<dim> fe_face_values(*problem.mapping, *problem.fe, *problem.face_quadrature,
-                                         update_values | update_JxW_values);
-        std::vector<Tensor<1, dim>> u(problem.face_quadrature->size());
-        Tensor<1, dim>              integral;
-        double                      measure = 0;
-        for (const auto &cell : problem.dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary() && (int)cell->face(f)->boundary_id() == id)
-                {
-                  fe_face_values.reinit(cell, f);
-                  fe_face_values[FEValuesExtractors::Vector(0)].get_function_values(problem.solution, u);
-                  for (unsigned int k = 0; k < u.size(); ++k)
-                    {
-                      integral += u[k] * fe_face_values.JxW(k);
-                      measure += fe_face_values.JxW(k);
-                    }
-                }
-        integral = Utilities::MPI::sum(integral, comm);
-        measure  = Utilities::MPI::sum(measure, comm);
-        for (unsigned int d = 0; d < dim; ++d)
-          q["mean_displacement_" + name + "_" + axis_name[d]] = integral[d] / measure;
-      }
+    template <class Problem, int dim = Problem::dimension>
+    void add_mean_displacements(const Problem &problem, Quantities &q)
+    {
+      for (const auto &name : names_in(problem.parameters.mean_displacements))
+        {
+          const int         id = problem.geometry.boundary_ids.at(name);
+          FEFaceValues<dim> fe_face_values(*problem.mapping, *problem.fe, *problem.face_quadrature,
+                                           update_values | update_JxW_values);
+          std::vector<Tensor<1, dim>> u(problem.face_quadrature->size());
+          Tensor<1, dim>              integral;
+          double                      measure = 0;
+          for (const auto &cell : problem.dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const auto f : cell->face_indices())
+                if (cell->face(f)->at_boundary() && (int)cell->face(f)->boundary_id() == id)
+                  {
+                    fe_face_values.reinit(cell, f);
+                    fe_face_values[FEValuesExtractors::Vector(0)].get_function_values(problem.solution, u);
+                    for (unsigned int k = 0; k < u.size(); ++k)
+                      {
+                        integral += u[k] * fe_face_values.JxW(k);
+                        measure += fe_face_values.JxW(k);
+                      }
+                  }
+          integral = Utilities::MPI::sum(integral, problem.communicator);
+          measure  = Utilities::MPI::sum(measure, problem.communicator);
+          for (unsigned int d = 0; d < dim; ++d)
+            q["mean_displacement_" + name + "_" + axis_name[d]] = integral[d] / measure;
+        }
+    }
 
     // Best-fit rigid motion u ~ t + w x (x - c) of a boundary's DoFs, least squares.
-    for (const auto &name : names_in(p.rotations))
-      {
-        const int      id = problem.geometry.boundary_ids.at(name);
-        const IndexSet boundary_dofs =
-          DoFTools::extract_boundary_dofs(problem.dof_handler, displacement_mask,
-                                          {static_cast<types::boundary_id>(id)});
-        // Unknowns: t (3) and w (3); in 2D only t_x, t_y, w_z matter.
-        FullMatrix<double> normal(6, 6);
-        Vector<double>     rhs(6);
-        for (const auto &[dof, location] : locations)
-          if (boundary_dofs.is_element(dof))
+    template <class Problem, int dim = Problem::dimension>
+    void add_boundary_rotations(const Problem           &problem,
+                                const DofLocations<dim> &locations,
+                                Quantities              &q)
+    {
+      MPI_Comm comm = problem.communicator;
+      for (const auto &name : names_in(problem.parameters.rotations))
+        {
+          const int      id            = problem.geometry.boundary_ids.at(name);
+          const IndexSet boundary_dofs = boundary_displacement_dofs(problem, id);
+          // Unknowns: t (3) and w (3); in 2D only t_x, t_y, w_z matter.
+          FullMatrix<double> normal(6, 6);
+          Vector<double>     rhs(6);
+          for (const auto &[dof, location] : locations)
+            if (boundary_dofs.is_element(dof))
+              {
+                double       row[6] = {0, 0, 0, 0, 0, 0};
+                const auto   c      = location.component;
+                Tensor<1, 3> x;
+                for (unsigned int d = 0; d < dim; ++d)
+                  x[d] = location.reference[d];
+                row[c] = 1;
+                for (unsigned int j = 0; j < 3; ++j)
+                  {
+                    Tensor<1, 3> e;
+                    e[j]       = 1;
+                    row[3 + j] = cross_product_3d(e, x)[c];
+                  }
+                for (unsigned int i = 0; i < 6; ++i)
+                  {
+                    rhs(i) += row[i] * problem.solution[dof];
+                    for (unsigned int j = 0; j < 6; ++j)
+                      normal(i, j) += row[i] * row[j];
+                  }
+              }
+          // One sum per entry, in this order on every rank.
+          for (unsigned int i = 0; i < 6; ++i)
             {
-              double       row[6] = {0, 0, 0, 0, 0, 0};
-              const auto   c      = location.component;
-              Tensor<1, 3> x;
-              for (unsigned int d = 0; d < dim; ++d)
-                x[d] = location.reference[d];
-              row[c] = 1;
-              for (unsigned int j = 0; j < 3; ++j)
-                {
-                  Tensor<1, 3> e;
-                  e[j]       = 1;
-                  row[3 + j] = cross_product_3d(e, x)[c];
-                }
-              for (unsigned int i = 0; i < 6; ++i)
-                {
-                  rhs(i) += row[i] * problem.solution[dof];
-                  for (unsigned int j = 0; j < 6; ++j)
-                    normal(i, j) += row[i] * row[j];
-                }
+              rhs(i) = Utilities::MPI::sum(rhs(i), comm);
+              for (unsigned int j = 0; j < 6; ++j)
+                normal(i, j) = Utilities::MPI::sum(normal(i, j), comm);
             }
-        for (unsigned int i = 0; i < 6; ++i)
-          {
-            rhs(i) = Utilities::MPI::sum(rhs(i), comm);
-            for (unsigned int j = 0; j < 6; ++j)
-              normal(i, j) = Utilities::MPI::sum(normal(i, j), comm);
-          }
-        if (dim == 2) // t_z, w_x, w_y do not exist in plane models
-          for (unsigned int i : {2u, 3u, 4u})
-            normal(i, i) = 1;
-        Vector<double> tw(6);
-        normal.gauss_jordan();
-        normal.vmult(tw, rhs);
-        if (dim == 2)
-          q["rotation_" + name + "_z"] = tw(5);
-        else
-          for (unsigned int d = 0; d < 3; ++d)
-            q["rotation_" + name + "_" + axis_name[d]] = tw(3 + d);
-      }
+          if (dim == 2) // t_z, w_x, w_y do not exist in plane models
+            for (unsigned int i : {2u, 3u, 4u})
+              normal(i, i) = 1;
+          Vector<double> tw(6);
+          normal.gauss_jordan();
+          normal.vmult(tw, rhs);
+          if (dim == 2)
+            q["rotation_" + name + "_z"] = tw(5);
+          else
+            for (unsigned int d = 0; d < 3; ++d)
+              q["rotation_" + name + "_" + axis_name[d]] = tw(3 + d);
+        }
+    }
 
     // Rigid boundaries: the exact rotation (radians) and the displacement of the moment centre.
-    for (const auto &rigid : problem.rigid_boundaries)
-      {
-        const auto  motion = rigid.motion(problem.solution, problem.geometrically_nonlinear);
-        const auto &name   = rigid.load.boundary;
-        if (dim == 2)
-          q["rigid_rotation_" + name + "_z"] = motion.rotation[2];
-        else
-          for (unsigned int d = 0; d < 3; ++d)
-            q["rigid_rotation_" + name + "_" + axis_name[d]] = motion.rotation[d];
-        for (unsigned int d = 0; d < dim; ++d)
-          q["rigid_displacement_" + name + "_" + axis_name[d]] = motion.displacement[d];
-      }
-
-    // Peak von Mises over quadrature points and element nodes; strain energy.
+    template <class Problem, int dim = Problem::dimension>
+    void add_rigid_motions(const Problem &problem, Quantities &q)
     {
+      for (const auto &rigid : problem.rigid_boundaries)
+        {
+          const auto  motion = rigid.motion(problem.solution, problem.geometrically_nonlinear);
+          const auto &name   = rigid.load.boundary;
+          if (dim == 2)
+            q["rigid_rotation_" + name + "_z"] = motion.rotation[2];
+          else
+            for (unsigned int d = 0; d < 3; ++d)
+              q["rigid_rotation_" + name + "_" + axis_name[d]] = motion.rotation[d];
+          for (unsigned int d = 0; d < dim; ++d)
+            q["rigid_displacement_" + name + "_" + axis_name[d]] = motion.displacement[d];
+        }
+    }
+
+    // Peak von Mises over quadrature points and element nodes (with its location), strain
+    // energy, and the yield safety factor.
+    template <class Problem, int dim = Problem::dimension>
+    void add_peak_stress_and_energy(const Problem &problem, Quantities &q)
+    {
+      MPI_Comm              comm   = problem.communicator;
       const Quadrature<dim> sample = peak_sample_points(*problem.quadrature, *problem.fe);
       const bool            has_pressure = problem.fe->n_components() > dim;
       const FEValuesExtractors::Vector u(0);
@@ -378,6 +418,49 @@ namespace compliant
       q["strain_energy"]       = Utilities::MPI::sum(energy, comm);
       q["yield_safety_factor"] = Utilities::MPI::min(safety, comm);
     }
+
+  } // namespace
+
+  template <class Problem>
+  void validate_quantity_requests(const Problem &problem)
+  {
+    const auto &p = problem.parameters;
+    constexpr int dim = Problem::dimension;
+    for (const auto &[name, point] : requested_points<dim>(p))
+      {
+        bool found = false;
+        point_displacement(problem, point, found);
+        if (!found)
+          throw std::invalid_argument("Quantities/Points: point '" + name +
+                                      "' lies outside the mesh");
+      }
+    for (const auto &[name, point] : reaction_points<dim>(p))
+      boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Reactions");
+    for (const auto &name : names_in(p.mean_displacements))
+      boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Mean displacements");
+    for (const auto &name : names_in(p.rotations))
+      boundary_id_of(name, problem.geometry.boundary_ids, "Quantities/Rotations");
+    validate_region_maxima(problem);
+    validate_point_stresses(problem);
+  }
+
+  // Each step below runs its MPI collectives on every rank; keep their order.
+  template <class Problem>
+  Quantities compute_quantities(const Problem &problem)
+  {
+    Quantities q;
+    add_mesh_sizes(problem, q);
+    add_point_displacements(problem, q);
+
+    // The DoF locations serve both the reactions and the boundary rotations.
+    const auto residual  = problem.reaction_forces();
+    const auto locations = owned_dof_locations(problem);
+    const auto moments   = add_reactions(problem, residual, locations, q);
+    add_stiffnesses(problem, moments, q);
+    add_mean_displacements(problem, q);
+    add_boundary_rotations(problem, locations, q);
+    add_rigid_motions(problem, q);
+    add_peak_stress_and_energy(problem, q);
     add_region_maxima(problem, q);
     add_point_stresses(problem, q);
     return q;
