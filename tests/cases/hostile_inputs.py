@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 87 inputs.
-README_CENSUS = {"refused with exit 2": 77, "tool errors with exit 1": 6, "must work": 3, "rank failing alone": 1}
+# The README's census of the corpus: 105 inputs.
+README_CENSUS = {"refused with exit 2": 95, "tool errors with exit 1": 6, "must work": 3, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -218,6 +218,46 @@ solver_case("point outside a distributed mesh",
 solver_case("modal: -3 modes", [modal, S, "Modal/Number of modes=-3"], ["modes"])
 solver_case("negative load step", [hinge, S, "Analysis=nonlinear static", S, "Finite strain/Initial step=-0.1"],
             ["Initial step"])
+
+# --- meshing: geometry parameters a .geo cannot build (issue 33) --------------------------------
+# Each shipped .geo checks its parameters and stops with its own message (the file and the
+# condition) before gmsh builds anything; --check stops right after meshing.
+def meshing_case(name, case, setting, words):
+    solver_case("meshing: " + name, [os.path.join(root, "cases", case), "--check", S,
+                                     "Geometry/Parameters/" + setting], words)
+
+
+meshing_case("flexure as thick as its links", "flexure_hinge.prm", "t=10", ["flexure_hinge_2d.geo", "0 < t < T"])
+meshing_case("no cells through the flexure", "flexure_hinge.prm", "nt=0", ["flexure_hinge_2d.geo", "nt >= 1"])
+meshing_case("3D hinge of zero width", "flexure_hinge_3d.prm", "b=0", ["flexure_hinge_3d.geo", "b > 0"])
+meshing_case("column of zero length", "verification/column_imperfection.prm", "L=0", ["cantilever_2d.geo", "L > 0"])
+meshing_case("3D strip of zero width", "verification/rollup_rigid_moment_3d.prm", "W=0", ["cantilever_3d.geo", "W > 0"])
+meshing_case("fillet wider than the pivot's arm", "morphing_wing/compliant_pivot.prm", "rf=100",
+             ["compliant_pivot_arm.geo", "W > t (1 + 2 rf)"])
+meshing_case("negative fillet in the flap", "flap/flap_fe.prm", "rf=-1", ["flap_mechanism.geo", "rf >= 0"])
+meshing_case("bistable beams overlapping", "bistable/double_beam.prm", "t=100",
+             ["cosine_double_beam_2d.geo", "must not overlap"])
+meshing_case("Jansen links that cannot meet", "jansen/leg_structure_3d.prm", "BC=1",
+             ["jansen_leg.geo", "cannot be assembled"])
+meshing_case("leaves of the coupling overlapping", "leaf_spring/coupling.prm", "r=1",
+             ["leaf_coupling.geo", "r > (a + b)/2"])
+meshing_case("leaf of zero aspect", "leaf_spring/leaf_bending.prm", "aspect=0", ["leaf_spring.geo", "aspect > 0"])
+meshing_case("cylinder bore outside its outer radius", "verification/lame_cylinder.prm", "a=1000",
+             ["thick_cylinder_2d.geo", "0 < a < b"])
+meshing_case("sphere with zero mesh size", "verification/lame_sphere.prm", "lc=0", ["thick_sphere_3d.geo", "lc > 0"])
+meshing_case("plate of zero thickness", "verification/plate_buckling.prm", "t=0", ["plate_quarter_3d.geo", "t > 0"])
+meshing_case("flat arch", "verification/arch_snap_through.prm", "h=0", ["arch_2d.geo", "0 < h"])
+meshing_case("pin eye wider than the bar", "verification/pinned_bar.prm", "rp=100", ["pinned_bar_2d.geo", "rp < w/2"])
+meshing_case("Cook's membrane with no cells", "verification/cook_membrane_neo_hooke.prm", "n=0",
+             ["cook_membrane.geo", "n >= 1"])
+# A self-intersecting outline: gmsh cannot mesh it and says where.
+bowtie = scratch_file("bowtie.geo", "Point(1) = {0, 0, 0, 0.2}; Point(2) = {4, 4, 0, 0.2}; Point(3) = {4, 0, 0, 0.2};\n"
+                      "Point(4) = {0, 4, 0, 0.2}; Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+                      "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+                      "Physical Curve(\"left\") = {4}; Physical Surface(\"body\") = {1};\n")
+solver_case("meshing: self-intersecting outline",
+            [scratch_file("bowtie.prm", "set Model = plane stress\nset Analysis = modal\nsubsection Geometry\n"
+                          "  set Mesh file = " + bowtie + "\nend\n"), "--check"], ["bowtie.geo", "gmsh could not mesh"])
 
 # --- names, meshes, supports -------------------------------------------------------------------
 solver_case("missing mesh file", [hinge, S, "Geometry/Mesh file=nothing.geo"], ["nothing.geo"])
