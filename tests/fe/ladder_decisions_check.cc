@@ -130,6 +130,29 @@ TEST(LadderStopRule, UnevenRungsNeedASteadyOrderOrPayTheSafetyFactor)
     }
 }
 
+TEST(LadderStopRule, GuardsRefuseANonMonotoneSequenceOrAnUnattainableOrder)
+{
+  // Issue 28: sigma_yy at a hole's edge on graded Q2 meshes against an exact 3. The last difference
+  // changes sign; unguarded, the fit gave order 4.83 and an estimate of 0.0036 % for a true 0.44 %.
+  StopRule   rule(false);
+  const auto oscillating = estimate_discretization_error({2.5988, 2.9311, 3.0161, 3.0131}, 3.0, attainable_order(2));
+  EXPECT_FALSE(oscillating.available);
+  EXPECT_NE(oscillating.note.find("change sign"), std::string::npos);
+  EXPECT_LT(rule.stop_estimate("s", oscillating, false), 0);
+  EXPECT_NE(rule.why_go_on({{"s", oscillating}}, 1.0).find("not monotone"), std::string::npos);
+
+  // Monotone, but converging at h^5 on Q2 (no functional of a Q2 solution does): refused; the
+  // same sequence on Q3 (attainable 6.9) is trusted, and so is h^4 on Q2.
+  const auto fast = power_law(3, 0.1, 5);
+  const auto too_fast = estimate_discretization_error(fast, 3.0, attainable_order(2));
+  EXPECT_FALSE(too_fast.available);
+  EXPECT_NE(too_fast.note.find("above the attainable 4.6"), std::string::npos);
+  EXPECT_TRUE(estimate_discretization_error(fast, 3.0, attainable_order(3)).available);
+  EXPECT_TRUE(estimate_discretization_error(power_law(3, 0.1, 4), 3.0, attainable_order(2)).available);
+  // Degree rungs have no bound in h (attainable 0).
+  EXPECT_TRUE(estimate_discretization_error(fast, 3.0).available);
+}
+
 TEST(LadderModelChecks, FiniteStrainWhenTheGeometricErrorMissesTheTarget)
 {
   // theta = 0.05 rad: a geometric error of theta^2 = 0.25 %.

@@ -1,7 +1,11 @@
 #include "analyses/linear_static.h"
 
+#include "analyses/error_estimates.h"
 #include "analyses/linear_static_model.h"
+#include "quantities/comparison.h"
 #include "output/field_output.h"
+
+#include <iostream>
 
 namespace compliant
 {
@@ -25,6 +29,24 @@ namespace compliant
       if (!problem.statistics.multigrid_note.empty())
         summary.settings.insert({"multigrid", problem.statistics.multigrid_note});
       summary.quantities = model.quantities;
+      if (p.error_estimates)
+        {
+          Quantities values = model.quantities; // derived ones too, for their estimates
+          try
+            {
+              add_derived_quantities(p.derived, values, problem.expression_variables());
+            }
+          catch (const std::invalid_argument &e)
+            {
+              throw InputError("case file '" + p.case_file + "', Quantities/Derived: " + e.what());
+            }
+          const auto estimates = estimate_quantity_errors<dim>(context, p, values, problem.triangulation.all_reference_cells_are_hyper_cube());
+          add_error_estimates(summary, estimates);
+          if (estimates.available && dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0)
+            std::cout << "Error estimates: " << estimates.absolute.size() << " quantities, enriched model "
+                      << estimates.dual_dofs << " DoFs in " << estimates.dual_seconds << " s (the model itself "
+                      << model.seconds << " s)" << std::endl;
+        }
       finish_run(context, summary, problem.expression_variables(),
                  [&](const std::string &directory) { write_fields(problem, directory); });
       return 0;

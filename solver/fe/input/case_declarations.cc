@@ -233,6 +233,13 @@ namespace compliant
                           "coordinates of each (_x, _y, _z), sampled at quadrature points and "
                           "element nodes; per step in a nonlinear curve.csv. Linear static, "
                           "linkage and nonlinear static analyses.");
+        prm.declare_entry("Error estimates", "false", Patterns::Bool(),
+                          "Linear static: each quantity's discretization error, estimated by the "
+                          "dual-weighted residual with the dual at one degree more than the element's "
+                          "(one extra solve on the same mesh serves every quantity), reported "
+                          "beside its value as <name>_error_estimate (relative) and "
+                          "<name>_error_estimate_absolute. Peaks at sharp corners have no converged "
+                          "value: their estimate says how far the value still moves.");
         prm.declare_entry("Derived", "", Patterns::Anything(),
                           "Quantities computed from others with muparser: "
                           "'J = reaction_moment_right_x / (G * twist)'. Names of quantities, "

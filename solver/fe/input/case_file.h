@@ -76,6 +76,7 @@ namespace compliant
 
     std::string points, reactions, mean_displacements, rotations, derived;
     std::string region_maxima; // bodies whose peak strain and stress are reported
+    bool        error_estimates = false; // Quantities/Error estimates: each quantity's estimate (linear static)
     std::string stress_points; // 'name: x y [z]': stress components, von Mises, principal
     std::string checks;
 

@@ -1,6 +1,7 @@
 #include "ladder/error_estimate.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace compliant
@@ -12,10 +13,18 @@ namespace compliant
     {
       return (std::pow(h1, p) - std::pow(h2, p)) / (std::pow(h0, p) - std::pow(h1, p));
     }
+
+    std::string short_number(const double x)
+    {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", x);
+      return text;
+    }
   } // namespace
 
   ErrorEstimate estimate_discretization_error(const std::vector<double> &values,
-                                              const std::vector<double> &sizes, const double assumed_order)
+                                              const std::vector<double> &sizes, const double assumed_order,
+                                              const double attainable)
   {
     if (sizes.size() != values.size())
       throw std::invalid_argument("estimate_discretization_error: one mesh size per value");
@@ -44,6 +53,12 @@ namespace compliant
             e.observed_order = 99, e.order_observed = true;
             return e;
           }
+        if (d * d_previous < 0)
+          {
+            e.note = "successive differences change sign (" + short_number(d_previous) + ", " + short_number(d) +
+                     "): not monotone, no trusted estimate";
+            return e;
+          }
         const double h0 = 1, h1 = sizes[n - 2] / sizes[n - 3], h2 = sizes[n - 1] / sizes[n - 3];
         const double ratio = d_previous != 0 ? std::abs(d / d_previous) : 2;
         // Irregular: the differences grow or shrink slower than h^0.5: a singular quantity (peak
@@ -65,6 +80,13 @@ namespace compliant
           }
         p                = 0.5 * (low + high);
         e.order_observed = true;
+        if (attainable > 0 && p > attainable)
+          {
+            e.observed_order = p;
+            e.note = "observed order " + short_number(p) + " above the attainable " + short_number(attainable) +
+                     ": a coincidence of pre-asymptotic errors, no trusted estimate";
+            return e;
+          }
       }
     e.observed_order = p;
     e.available      = true;
@@ -73,11 +95,12 @@ namespace compliant
     return e;
   }
 
-  ErrorEstimate estimate_discretization_error(const std::vector<double> &values, const double assumed_order)
+  ErrorEstimate estimate_discretization_error(const std::vector<double> &values, const double assumed_order,
+                                              const double attainable)
   {
     std::vector<double> sizes(values.size());
     for (std::size_t k = 0; k < sizes.size(); ++k)
       sizes[k] = std::ldexp(1.0, -static_cast<int>(k));
-    return estimate_discretization_error(values, sizes, assumed_order);
+    return estimate_discretization_error(values, sizes, assumed_order, attainable);
   }
 } // namespace compliant

@@ -68,7 +68,8 @@ namespace compliant
                 throw InputError("case file '" + p.case_file + "', Target/Quantities: '" + n +
                                  "' is not a reported quantity of the finite-strain analysis");
               history[n].push_back(found->second);
-              const auto e           = estimate_discretization_error(history[n], sizes, plan.degree + 1.0);
+              const double attainable = fs_planner.degree_rungs() ? 0 : attainable_order(plan.degree);
+              const auto   e = estimate_discretization_error(history[n], sizes, plan.degree + 1.0, attainable);
               rung.values[n]         = found->second;
               rung.estimates[n]      = e;
               const double stop      = stop_rule.stop_estimate(n, e, fs_planner.degree_rungs());

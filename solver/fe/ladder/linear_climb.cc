@@ -76,7 +76,8 @@ namespace compliant
         rung.values[n] = found->second;
         history[n].push_back(found->second);
         // Assumed order in h for a smooth quantity: degree + 1 (displacements at points).
-        const auto e           = estimate_discretization_error(history[n], mesh_sizes, rung.degree + 1.0);
+        const double attainable = planner.degree_rungs() ? 0 : attainable_order(rung.degree);
+        const auto   e = estimate_discretization_error(history[n], mesh_sizes, rung.degree + 1.0, attainable);
         rung.estimates[n]      = e;
         rung.stop_estimates[n] = stop_rule.stop_estimate(n, e, target.adaptive || planner.degree_rungs());
         met = met && rung.stop_estimates[n] >= 0 && rung.stop_estimates[n] <= target.relative_error;

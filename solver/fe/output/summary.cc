@@ -95,8 +95,37 @@ namespace compliant
     std::size_t width = 44; // one column for the values, however long a name
     for (const auto &q : s.quantities)
       width = std::max(width, q.first.size() + 2);
+    // An estimate stands beside its quantity (summary.json keeps it under its own name).
+    const auto shown_beside = [&](const std::string &k) {
+      for (const std::string suffix : {"_error_estimate", "_error_estimate_absolute"})
+        if (k.size() > suffix.size() && k.compare(k.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+            s.quantities.count(k.substr(0, k.size() - suffix.size())) > 0)
+          return true;
+      return false;
+    };
     for (const auto &[k, v] : s.quantities)
-      out << "  " << std::left << std::setw(width) << k << std::setprecision(8) << v << "\n";
+      {
+        if (shown_beside(k))
+          continue;
+        std::ostringstream value;
+        value << std::setprecision(8) << v;
+        out << "  " << std::left << std::setw(width) << k << value.str();
+        if (const auto e = s.quantities.find(k + "_error_estimate"); e != s.quantities.end())
+          {
+            // Relative to a value near zero (a reaction in a direction nothing loads) says
+            // nothing: the absolute estimate then.
+            const auto         absolute = s.quantities.find(k + "_error_estimate_absolute");
+            std::ostringstream estimate;
+            estimate << std::setprecision(2);
+            if (e->second < 1 || absolute == s.quantities.end())
+              estimate << 100 * e->second << " %";
+            else
+              estimate << absolute->second << " (absolute)";
+            out << std::string(value.str().size() < 16 ? 16 - value.str().size() : 1, ' ') << "error "
+                << estimate.str() << " (estimated)";
+          }
+        out << "\n";
+      }
     if (!s.comparisons.empty())
       {
         out << "\nComparison with closed forms\n  " << std::left << std::setw(34) << "quantity"

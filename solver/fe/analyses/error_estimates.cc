@@ -1,0 +1,107 @@
+#include "analyses/error_estimates.h"
+
+#include <deal.II/base/timer.h>
+
+#include "mesh/memory_estimate.h"
+#include "quantities/comparison.h"
+
+#include <cmath>
+#include <iostream>
+
+namespace compliant
+{
+  bool has_error_estimate(const std::string &name)
+  {
+    const auto starts = [&](const std::string &prefix) { return name.rfind(prefix, 0) == 0; };
+    const auto ends   = [&](const std::string &suffix) {
+      return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    if (starts("n_") || starts("time_") || starts("solver_") || ends("_error_estimate") ||
+        ends("_error_estimate_absolute"))
+      return false;
+    // Where a peak lies (max_von_mises_in_<body>_x) is a place, not a value to converge.
+    if (starts("max_") && name.find("_in_") != std::string::npos && (ends("_x") || ends("_y") || ends("_z")))
+      return false;
+    return true;
+  }
+
+  template <int dim>
+  QuantityEstimates estimate_quantity_errors(const RunContext &context, const CaseParameters &parameters,
+                                             const Quantities &values, const bool hypercube_cells)
+  {
+    const bool        root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
+    QuantityEstimates estimates;
+    CaseParameters    enriched = parameters;
+    // Simplices stop at degree 2, the hexahedral kernels at 4: past that, refine once instead.
+    const bool by_degree = parameters.element_degree < (hypercube_cells ? 4u : 2u);
+    if (by_degree)
+      enriched.element_degree = parameters.element_degree + 1;
+    else
+      enriched.global_refinements = parameters.global_refinements + 1;
+    estimates.dual_degree = enriched.element_degree;
+    estimates.how = by_degree ? "dual at degree " + std::to_string(enriched.element_degree) + " on the same mesh" :
+                                "dual on the once-refined mesh at degree " + std::to_string(enriched.element_degree) +
+                                  " (the highest this element has)";
+    try
+      {
+        refuse_refinement_beyond_memory(static_cast<std::uint64_t>(values.at("n_cells")), dim, by_degree ? 0 : 1,
+                                        enriched.element_degree,
+                                        dealii::Utilities::MPI::n_mpi_processes(context.communicator));
+      }
+    catch (const ModelTooLarge &e)
+      {
+        estimates.how = "not computed: the enriched model would not fit in memory (" + std::string(e.what()) + ")";
+        if (root)
+          std::cout << "Error estimates: " << estimates.how << std::endl;
+        return estimates;
+      }
+    if (root)
+      std::cout << "Error estimates: " << estimates.how << " (one enriched solve for every quantity)" << std::endl;
+    dealii::Timer    timer;
+    const RunContext enriched_context{enriched, context.prm, context.geometry, false, context.communicator};
+    auto             model = solve_linear_static_model<dim>(enriched_context, enriched);
+    Quantities       plus  = model.quantities;
+    try
+      {
+        add_derived_quantities(parameters.derived, plus, model.problem->expression_variables());
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("case file '" + parameters.case_file + "', Quantities/Derived: " + e.what());
+      }
+    estimates.available    = true;
+    estimates.dual_dofs    = model.problem->dof_handler.n_dofs();
+    estimates.dual_seconds = timer.wall_time();
+    for (const auto &[name, value] : values)
+      if (const auto found = plus.find(name); found != plus.end() && has_error_estimate(name) &&
+                                              std::isfinite(value) && std::isfinite(found->second))
+        {
+          const double difference  = std::abs(found->second - value);
+          estimates.absolute[name] = difference;
+          estimates.relative[name] = difference / std::max(std::abs(value), 1e-300);
+        }
+    return estimates;
+  }
+
+  void add_error_estimates(RunSummary &summary, const QuantityEstimates &estimates)
+  {
+    for (const auto &[name, absolute] : estimates.absolute)
+      {
+        summary.quantities[name + "_error_estimate"]          = estimates.relative.at(name);
+        summary.quantities[name + "_error_estimate_absolute"] = absolute;
+      }
+    summary.settings.insert({"error_estimates", estimates.available ?
+                                                  "dual-weighted residual, " + estimates.how + ": J(u+) - J(u)" :
+                                                  estimates.how});
+    if (estimates.available)
+      {
+        summary.quantities["error_estimate_dofs"] = estimates.dual_dofs;
+        summary.quantities["time_error_estimate"] = estimates.dual_seconds;
+      }
+  }
+
+  template QuantityEstimates estimate_quantity_errors<2>(const RunContext &, const CaseParameters &,
+                                                         const Quantities &, bool);
+  template QuantityEstimates estimate_quantity_errors<3>(const RunContext &, const CaseParameters &,
+                                                         const Quantities &, bool);
+} // namespace compliant
