@@ -27,7 +27,7 @@ namespace compliant
   struct QuantityEstimates
   {
     std::map<std::string, double> absolute; // |J(u+) - J(u_p)|
-    std::map<std::string, double> relative; // absolute / |J(u_p)|
+    std::map<std::string, double> relative; // absolute / |J(u_p)|; none for a round-off component
     std::string                   how;   // the enriched space, or why there is none
     bool                          available = false;
     unsigned int                  dual_degree = 0;

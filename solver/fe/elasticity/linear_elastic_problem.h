@@ -59,6 +59,12 @@ namespace compliant
     void add_support_constraints(const dealii::DoFHandler<dim>     &dofs,
                                  dealii::AffineConstraints<double> &constraints,
                                  bool                               homogeneous) const;
+    // The dual (adjoint) problem of a goal functional J(v) = j . v: K z = j with every support
+    // homogeneous, by the same operator and solver as the primal (K is symmetric), so it costs one
+    // primal solve. j must be assembled through homogeneous_constraints(). Returns z, ghosted.
+    dealii::PETScWrappers::MPI::Vector solve_dual(const dealii::PETScWrappers::MPI::Vector &j);
+    // The constraints with every prescribed value zero: the space of the dual.
+    dealii::AffineConstraints<double> homogeneous_constraints() const;
     // Called by whoever installs constraints beyond the supports (pins, ties): the matrix-free
     // levels could not represent them, so the solve falls back to an assembled matrix.
     void require_assembled_matrix(const std::string &reason);

@@ -181,6 +181,41 @@ namespace compliant
     return true;
   }
 
+  template <int dim>
+  AffineConstraints<double> LinearElasticProblem<dim>::homogeneous_constraints() const
+  {
+    AffineConstraints<double> homogeneous;
+    homogeneous.copy_from(constraints);
+    for (const auto &line : constraints.get_lines())
+      homogeneous.set_inhomogeneity(line.index, 0.);
+    return homogeneous;
+  }
+
+  template <int dim>
+  PETScWrappers::MPI::Vector LinearElasticProblem<dim>::solve_dual(const PETScWrappers::MPI::Vector &j)
+  {
+    // solve() reads system_rhs and constraints and writes solution and statistics: the primal's
+    // are put back afterwards (the matrix is the same: constraints enter it without their values).
+    AffineConstraints<double> primal_constraints;
+    primal_constraints.copy_from(constraints);
+    const auto primal_rhs        = system_rhs;
+    const auto primal_solution   = solution;
+    const auto primal_statistics = statistics;
+    constraints.copy_from(homogeneous_constraints());
+    system_rhs = j;
+    solve();
+    PETScWrappers::MPI::Vector z = solution;
+    constraints.copy_from(primal_constraints);
+    system_rhs = primal_rhs;
+    solution   = primal_solution;
+    statistics = primal_statistics;
+    return z;
+  }
+
+  template AffineConstraints<double> LinearElasticProblem<2>::homogeneous_constraints() const;
+  template AffineConstraints<double> LinearElasticProblem<3>::homogeneous_constraints() const;
+  template PETScWrappers::MPI::Vector LinearElasticProblem<2>::solve_dual(const PETScWrappers::MPI::Vector &);
+  template PETScWrappers::MPI::Vector LinearElasticProblem<3>::solve_dual(const PETScWrappers::MPI::Vector &);
   template void LinearElasticProblem<2>::choose_solver_method();
   template void LinearElasticProblem<3>::choose_solver_method();
   template void LinearElasticProblem<2>::require_assembled_matrix(const std::string &);

@@ -1,11 +1,22 @@
-// Adaptive refinement for the model ladder: Kelly's gradient-jump indicator on the solved linear
-// model marks the cells with the largest indicators, and the marks are returned as refine flags
-// that create_triangulation replays (CaseParameters::adaptive_refinements) so that every later
-// model, linear or finite strain, is built on the same adapted mesh with hanging-node constraints.
+// Adaptive refinement for the model ladder: indicators on the solved linear model mark the cells
+// with the largest ones, and the marks are returned as refine flags that create_triangulation
+// replays (CaseParameters::adaptive_refinements) so that every later model, linear or finite
+// strain, is built on the same adapted mesh with hanging-node constraints.
+//
+// Goal-oriented (dual-weighted) indicators where the target quantities have a dual: the error of
+// a goal J is a(e, e*) with e* the dual's error, bounded cell by cell by ||e||_K ||e*||_K
+// (Prudhomme and Oden), so a cell's indicator is Kelly's for the primal solution times Kelly's
+// for the dual solution z (K z = j, one more solve with the primal's operator and solver). Each
+// target weighs in relative to its value; a derived target through its sensitivities to the
+// quantities it is made of (finite differences of its expression). Reactions, moments,
+// stiffnesses and the energy are energy-like (their dual is the solution itself: M theta = 2 U
+// for a driven rotation): Kelly's indicator squared over the energy, the same as Kelly alone.
 #pragma once
 
 #include "elasticity/linear_elastic_problem.h"
+#include "quantities/quantities.h"
 
+#include <string>
 #include <vector>
 
 namespace compliant
@@ -15,4 +26,12 @@ namespace compliant
   // faces stays at most one (prepare_coarsening_and_refinement).
   template <int dim>
   std::vector<bool> kelly_refine_flags(LinearElasticProblem<dim> &problem, double cell_fraction);
+
+  // The same with dual-weighted indicators for the targets (quantity names; values: the model's
+  // quantities, derived ones included; derived: Quantities/Derived). how: which indicator each
+  // target got, for the log.
+  template <int dim>
+  std::vector<bool> goal_oriented_refine_flags(LinearElasticProblem<dim> &problem,
+                                               const std::vector<std::string> &targets, const Quantities &values,
+                                               const std::string &derived, double cell_fraction, std::string &how);
 } // namespace compliant

@@ -41,8 +41,10 @@ namespace compliant
     // (d) linear rungs; an exit code if the climb ended there (a --check, or the hand-over to 3D).
     std::optional<int> climb_linear();
     // A linear rung's values, estimates and stop estimates; true if every one meets the target.
-    bool estimate_rung(const LinearStaticModel<dim> &model, Rung &rung,
+    bool estimate_rung(const LinearStaticModel<dim> &model, const CaseParameters &rung_parameters, Rung &rung,
                        std::map<std::string, std::vector<double>> &history, const std::vector<double> &mesh_sizes);
+    // Refine flags for the next adaptive rung: goal-oriented (Target/Refinement indicator) or Kelly's.
+    std::vector<bool> refine_flags(const LinearStaticModel<dim> &model);
     // (b) a plane-stress rung against its 3D solid; why it cannot stand for the 3D part ("" if it can).
     std::string check_plane_stress(const LinearStaticModel<dim> &model, const Rung &rung, unsigned int k);
     int                finish_linear();

@@ -12,7 +12,10 @@ namespace compliant
   double Rung::stop_or_bare_estimate(const std::string &n) const
   {
     const auto stop = stop_estimates.find(n);
-    return stop != stop_estimates.end() && stop->second >= 0 ? stop->second : estimates.at(n).relative;
+    if (stop != stop_estimates.end() && stop->second >= 0)
+      return stop->second;
+    const auto dual = dual_estimates.find(n);
+    return dual != dual_estimates.end() ? dual->second : estimates.at(n).relative;
   }
 
   void print_rung(std::ostream &out, const Rung &rung, const std::size_t number, const bool show_adaptive)
@@ -28,7 +31,11 @@ namespace compliant
         out << ' ' << n << " = " << std::setprecision(8) << v << " (estimate "
             << (e.available ? percent(e.relative) : std::string("-"));
         const auto stop = rung.stop_estimates.find(n);
-        if (e.available && stop != rung.stop_estimates.end() && stop->second > e.relative)
+        const auto dual = rung.dual_estimates.find(n);
+        if (dual != rung.dual_estimates.end())
+          out << ", dual-weighted " << percent(dual->second);
+        if (e.available && stop != rung.stop_estimates.end() && stop->second > e.relative &&
+            (dual == rung.dual_estimates.end() || stop->second != dual->second))
           out << ", untrusted: order not steady; bound used " << percent(stop->second);
         out << ")";
       }
@@ -49,7 +56,7 @@ namespace compliant
         if (e.available)
           tail << e.relative;
         tail << ',';
-        if (e.available)
+        if (e.available || rung.dual_estimates.count(n) > 0)
           tail << rung.stop_or_bare_estimate(n);
       }
     return LadderRow{head.str(), rung.seconds, tail.str()};

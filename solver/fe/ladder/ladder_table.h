@@ -23,6 +23,9 @@ namespace compliant
     // The estimate the stop rule reads: the Richardson one, times the safety factor while the
     // observed order is not steady (adaptive and degree rungs); negative when there is none.
     std::map<std::string, double> stop_estimates;
+    // Quantities/Error estimates: the dual-weighted estimate of each (relative); the stop reads it
+    // where the Richardson estimate is missing or untrusted.
+    std::map<std::string, double> dual_estimates;
     std::string                   decision;
 
     // What the stop rule read for quantity n (the bare estimate when it read none).

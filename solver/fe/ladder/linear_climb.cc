@@ -4,6 +4,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include "analyses/error_estimates.h"
 #include "analyses/nonlinear_static.h"
 #include "ladder/adaptive_refinement.h"
 #include "ladder/ladder_climb.h"
@@ -48,9 +49,9 @@ namespace compliant
   } // namespace
 
   template <int dim>
-  bool LadderClimb<dim>::estimate_rung(const LinearStaticModel<dim> &model, Rung &rung,
-                                       std::map<std::string, std::vector<double>> &history,
-                                       const std::vector<double>                  &mesh_sizes)
+  bool LadderClimb<dim>::estimate_rung(const LinearStaticModel<dim> &model, const CaseParameters &rung_parameters,
+                                       Rung &rung, std::map<std::string, std::vector<double>> &history,
+                                       const std::vector<double> &mesh_sizes)
   {
     bool met = true;
     // Targets may name derived quantities (Quantities/Derived) as well as computed ones.
@@ -80,9 +81,37 @@ namespace compliant
         const auto   e = estimate_discretization_error(history[n], mesh_sizes, rung.degree + 1.0, attainable);
         rung.estimates[n]      = e;
         rung.stop_estimates[n] = stop_rule.stop_estimate(n, e, target.adaptive || planner.degree_rungs());
-        met = met && rung.stop_estimates[n] >= 0 && rung.stop_estimates[n] <= target.relative_error;
       }
+    if (p.error_estimates)
+      {
+        // The dual-weighted estimate stands in where the sequence cannot vouch for Richardson's.
+        const auto dual = estimate_quantity_errors<dim>(context, rung_parameters, rung_quantities,
+                                                        model.problem->triangulation.all_reference_cells_are_hyper_cube());
+        for (const auto &n : names)
+          if (const auto found = dual.relative.find(n); found != dual.relative.end())
+            {
+              rung.dual_estimates[n] = found->second;
+              if (rung.stop_estimates[n] < 0)
+                rung.stop_estimates[n] = found->second;
+            }
+      }
+    for (const auto &n : names)
+      met = met && rung.stop_estimates[n] >= 0 && rung.stop_estimates[n] <= target.relative_error;
     return met;
+  }
+
+  template <int dim>
+  std::vector<bool> LadderClimb<dim>::refine_flags(const LinearStaticModel<dim> &model)
+  {
+    if (!target.goal_oriented)
+      return kelly_refine_flags(*model.problem, target.refined_fraction);
+    auto values = model.quantities;
+    add_derived_quantities(p.derived, values, model.problem->expression_variables());
+    std::string how;
+    auto        flags = goal_oriented_refine_flags(*model.problem, names, values, p.derived, target.refined_fraction, how);
+    if (root)
+      std::cout << "  (d) refine for " << how << std::endl;
+    return flags;
   }
 
   template <int dim>
@@ -173,7 +202,7 @@ namespace compliant
         rung.adaptive_cycles = rung_parameters->adaptive_refinements.size();
         rung.dofs            = model.quantities.at("n_dofs");
         mesh_sizes.push_back(planner.mesh_size(target.adaptive, k, rung.dofs, dim));
-        met = estimate_rung(model, rung, history, mesh_sizes);
+        met = estimate_rung(model, *rung_parameters, rung, history, mesh_sizes);
         std::string needs_3d = check_plane_stress(model, rung, k); // why 2D cannot stand for the 3D part
         if (k == 0)
           {
@@ -217,7 +246,7 @@ namespace compliant
             rung.decision = planner.next_step(target.adaptive, k) +
                             stop_rule.why_go_on(rung.estimates, target.relative_error);
             if (target.adaptive)
-              adaptive_refinements.push_back(kelly_refine_flags(*model.problem, target.refined_fraction));
+              adaptive_refinements.push_back(refine_flags(model));
           }
         rung.seconds = rung_timer.wall_time();
         print(rung);
@@ -252,8 +281,15 @@ namespace compliant
                                                                       " x the Richardson estimate"});
             }
         }
+      else if (const auto dual = rung.dual_estimates.find(n); dual != rung.dual_estimates.end())
+        {
+          summary.quantities[n + "_error_estimate"] = dual->second;
+          summary.settings.insert({n + "_error_estimate_basis", "dual-weighted residual (Richardson: " + e.note + ")"});
+        }
       else
         summary.settings.insert({n + "_error_estimate", e.note});
+    for (const auto &[n, d] : rung.dual_estimates)
+      summary.quantities[n + "_dual_error_estimate"] = d;
   }
 
   template <int dim>
@@ -286,10 +322,12 @@ namespace compliant
     return met ? 0 : 4;
   }
 
-  template bool LadderClimb<2>::estimate_rung(const LinearStaticModel<2> &, Rung &,
+  template bool LadderClimb<2>::estimate_rung(const LinearStaticModel<2> &, const CaseParameters &, Rung &,
                                               std::map<std::string, std::vector<double>> &, const std::vector<double> &);
-  template bool LadderClimb<3>::estimate_rung(const LinearStaticModel<3> &, Rung &,
+  template bool LadderClimb<3>::estimate_rung(const LinearStaticModel<3> &, const CaseParameters &, Rung &,
                                               std::map<std::string, std::vector<double>> &, const std::vector<double> &);
+  template std::vector<bool> LadderClimb<2>::refine_flags(const LinearStaticModel<2> &);
+  template std::vector<bool> LadderClimb<3>::refine_flags(const LinearStaticModel<3> &);
   template std::string LadderClimb<2>::check_plane_stress(const LinearStaticModel<2> &, const Rung &, unsigned int);
   template std::string LadderClimb<3>::check_plane_stress(const LinearStaticModel<3> &, const Rung &, unsigned int);
   template std::optional<int> LadderClimb<2>::climb_linear();

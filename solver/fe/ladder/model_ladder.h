@@ -34,6 +34,7 @@ namespace compliant
     bool                     degree   = false;       // Refinement = degree
     bool                     automatic = false;      // Refinement = auto: degree on 3D hexahedra, else uniform
     double                   refined_fraction = 0.3; // of the cells, per adaptive rung
+    bool                     goal_oriented    = true; // dual-weighted indicators (else Kelly's)
     bool                     closed_forms = true;    // rung (a): a closed form with a bound may stop the climb
     std::string              paired_model; // Target/Paired model: the other dimension's model of the part
 

@@ -49,6 +49,12 @@ namespace compliant
     prm.declare_entry("Refined cell fraction", "0.3", Patterns::Double(0.01, 1),
                       "Adaptive refinement: the fraction of cells refined per rung (largest "
                       "indicators first).");
+    prm.declare_entry("Refinement indicator", "goal", Patterns::Selection("goal|kelly"),
+                      "Adaptive refinement: goal: dual-weighted (goal-oriented) indicators, Kelly's "
+                      "for the solution times Kelly's for the dual of each target quantity (one more "
+                      "solve per point displacement, stress at a point or mean displacement; "
+                      "reactions, moments, stiffnesses and the energy use the solution itself); "
+                      "kelly: Kelly's gradient-jump indicator of the solution alone.");
     prm.declare_entry("Paired model", "", Patterns::Anything(),
                       "Rung (b) across dimensions: the case file of the same part in the other "
                       "dimension, 'case.prm[: Section/Entry=expression, ...]' (next to this case; "
@@ -76,6 +82,7 @@ namespace compliant
     t.degree              = prm.get("Refinement") == "degree";
     t.automatic           = prm.get("Refinement") == "auto";
     t.refined_fraction    = prm.get_double("Refined cell fraction");
+    t.goal_oriented       = prm.get("Refinement indicator") == "goal";
     t.closed_forms        = prm.get_bool("Closed forms");
     t.paired_model        = prm.get("Paired model");
     for (const auto &item : split(prm.get("Quantities"), ','))

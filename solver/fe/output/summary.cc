@@ -110,14 +110,15 @@ namespace compliant
         std::ostringstream value;
         value << std::setprecision(8) << v;
         out << "  " << std::left << std::setw(width) << k << value.str();
-        if (const auto e = s.quantities.find(k + "_error_estimate"); e != s.quantities.end())
+        const auto e        = s.quantities.find(k + "_error_estimate");
+        const auto absolute = s.quantities.find(k + "_error_estimate_absolute");
+        if (e != s.quantities.end() || absolute != s.quantities.end())
           {
             // Relative to a value near zero (a reaction in a direction nothing loads) says
             // nothing: the absolute estimate then.
-            const auto         absolute = s.quantities.find(k + "_error_estimate_absolute");
             std::ostringstream estimate;
             estimate << std::setprecision(2);
-            if (e->second < 1 || absolute == s.quantities.end())
+            if (e != s.quantities.end() && (e->second < 1 || absolute == s.quantities.end()))
               estimate << 100 * e->second << " %";
             else
               estimate << absolute->second << " (absolute)";

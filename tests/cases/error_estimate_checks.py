@@ -1,0 +1,73 @@
+#!/usr/bin/python3
+"""Dual-weighted-residual error estimates (Quantities/Error estimates = true) on coarse meshes:
+effectivity (estimate / true error) within 0.5-3 for quantities with exact or converged references,
+none of them a problem the model ladder's tests use (cases/verification/error_estimates.md has the
+full tables):
+  - Lame cylinder, 2D plane strain, Q2 4 x 8 and Q1 8 x 16: bore displacement, hoop stress at the
+    bore (a curved hole's edge), strain energy, reaction moment of the symmetry support (exact);
+  - Lame cylinder in 3D, hexahedra Q2 4 x 8 x 1: bore displacement, energy, reaction moment (exact);
+  - plate with a circular hole (Kirsch), Q2 nr 8, nc 6: sigma_xx at the hole's edge and the hole's
+    displacement against the converged Q3 value of the same finite plate (3.3601 is 12 % above the
+    infinite plate's 3 S);
+  - fixed-guided stocky beam, Q2 ny = 4: transverse stiffness of the driven end (converged Q3);
+  - 3D cantilever turned at its end, Q2 2 x 2 x 6: rotational stiffness and reaction moment
+    (converged Q3, extrapolated).
+Also: the settings name the method, time_error_estimate is reported, and the relative estimate is
+the absolute one over |value|.
+"""
+import math
+import os
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
+from study import run_case  # noqa: E402
+from case_checks import check, finish  # noqa: E402
+
+cases = os.path.join(here, "..", "..", "cases", "verification")
+
+# Lame: a = 10, b = 20, p = 10, E = 1000, nu = 0.3 (cases/verification/error_estimates.md).
+A, B, P, E, NU = 10.0, 20.0, 10.0, 1000.0, 0.3
+C, D = P * A**2 / (B**2 - A**2), P * A**2 * B**2 / (B**2 - A**2)
+U_A = (1 + NU) / E * ((1 - 2 * NU) * C * A + D / A)
+LAME = {"displacement_inner_x": U_A, "stress_bore_yy": C + D / A**2,
+        "strain_energy": 0.5 * P * U_A * math.pi * A / 2,
+        "reaction_moment_x_axis_z": -(C * (B**2 - A**2) / 2 + D * math.log(B / A))}
+# Converged references (degree 3 on finer meshes, cases/verification/error_estimates.py).
+KIRSCH = {"stress_edge_xx": 3.3600775, "displacement_hole_top_y": -0.00129966828}
+GUIDED = {"stiffness_right_y": 7.170837}
+TURNED = {"rotational_stiffness_right": 92487.2, "reaction_moment_right_z": 16.14206}
+
+
+def effectivities(name, case, sets, references):
+    summary = run_case(os.path.join(cases, case), list(sets) + ["Quantities/Error estimates=true"])
+    q = summary["quantities"]
+    check("dual-weighted residual" in summary["settings"].get("error_estimates", ""),
+          "%s: settings error_estimates names the method (%r)" % (name, summary["settings"].get("error_estimates")))
+    check(q.get("time_error_estimate", 0) > 0, "%s: time_error_estimate reported" % name)
+    for k, reference in references.items():
+        if not check(k + "_error_estimate_absolute" in q, "%s: %s_error_estimate_absolute reported" % (name, k)):
+            continue
+        true = abs(q[k] - reference)
+        estimate = q[k + "_error_estimate_absolute"]
+        eff = estimate / true if true > 0 else float("inf")
+        check(0.5 <= eff <= 3, "%s %s: value %.9g, reference %.9g, true error %.3g, estimate %.3g, effectivity %.2f "
+              "within 0.5-3" % (name, k, q[k], reference, true, estimate, eff))
+        relative = q[k + "_error_estimate"]
+        check(abs(relative - estimate / abs(q[k])) <= 1e-6 * relative,
+              "%s %s: relative estimate %.4g = absolute / |value|" % (name, k, relative))
+    return q
+
+
+cyl = ["Geometry/Parameters/nr=4", "Geometry/Parameters/nc=8"]
+effectivities("Lame Q2 4x8", "lame_cylinder.prm", cyl, LAME)
+effectivities("Lame Q1 8x16", "lame_cylinder.prm", ["Discretization/Element degree=1", "Geometry/Parameters/nr=8",
+                                                    "Geometry/Parameters/nc=16"], LAME)
+effectivities("Lame 3D Q2 4x8x1", "lame_cylinder_3d.prm", cyl + ["Quantities/Reactions=x_axis"],
+              {"displacement_inner_x": U_A, "strain_energy": 5 * LAME["strain_energy"],
+               "reaction_moment_x_axis_z": 5 * LAME["reaction_moment_x_axis_z"]})
+effectivities("Kirsch Q2 8x6", "plate_hole_kirsch.prm", ["Geometry/Parameters/nr=8", "Geometry/Parameters/nc=6"], KIRSCH)
+effectivities("guided beam Q2 ny=4", "guided_beam_stiffness.prm", ["Geometry/Parameters/ny=4"], GUIDED)
+effectivities("turned 3D cantilever Q2 2x2x6", "cantilever_3d_end_rotation.prm", ["Geometry/Parameters/ny=2",
+                                                                               "Geometry/Parameters/nz=2"], TURNED)
+finish()
