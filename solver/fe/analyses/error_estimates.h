@@ -19,6 +19,7 @@
 #include "analyses/linear_static_model.h"
 #include "output/summary.h"
 
+#include <functional>
 #include <map>
 #include <string>
 
@@ -38,13 +39,19 @@ namespace compliant
   // Quantities that are results of the model (not counts, times, iterations, nor where a peak is).
   bool has_error_estimate(const std::string &name);
 
-  // The enriched model of `model` (same case, same mesh, degree p + 1) solved, and the estimates of
-  // every quantity of `values` that has one (values may include derived quantities: they are
+  // Solves the enriched model of a case (its parameters given) and returns its quantities and DoFs.
+  using EnrichedSolve = std::function<std::pair<Quantities, std::size_t>(const RunContext &, const CaseParameters &)>;
+
+  // The enriched model of the case (same mesh, degree p + 1) solved by `solve`, and the estimates
+  // of every quantity of `values` that has one (values may include derived quantities: they are
   // derived from the enriched model's quantities alike). hypercube_cells: the mesh's cells are
-  // quadrilaterals or hexahedra (degrees to 4), else simplices (to 2).
+  // quadrilaterals or hexahedra (degrees to 4), else simplices (to 2). Without `solve`: the linear
+  // static model. Modal runs pass theirs: an eigenvalue's dual is its own mode, and the DWR estimate
+  // of omega^2 is omega+^2 - omega_p^2 to leading order (Heuveline and Rannacher).
   template <int dim>
   QuantityEstimates estimate_quantity_errors(const RunContext &context, const CaseParameters &parameters,
-                                             const Quantities &values, bool hypercube_cells);
+                                             const Quantities &values, bool hypercube_cells,
+                                             const EnrichedSolve &solve = {});
 
   // <name>_error_estimate (relative) and <name>_error_estimate_absolute for each, and how.
   void add_error_estimates(RunSummary &summary, const QuantityEstimates &estimates);

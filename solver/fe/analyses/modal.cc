@@ -1,5 +1,7 @@
 #include "analyses/modal.h"
 
+#include "analyses/error_estimates.h"
+
 #include <deal.II/base/timer.h>
 
 #include "constraints/extra_constraints.h"
@@ -14,6 +16,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 
 namespace compliant
 {
@@ -115,31 +118,30 @@ namespace compliant
         q["effective_mass_fraction_" + std::string(axis_name[d]) + "_sum"] = fraction_sum[d];
     }
 
+    // One modal model built and solved: what run() reports, and what the error estimates solve
+    // again one degree up.
     template <int dim>
-    int run(const RunContext &context)
+    struct ModalModel
     {
-      const auto         &p    = context.parameters;
-      MPI_Comm            comm = context.communicator;
-      const bool          root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-      dealii::Timer       timer;
-      const ModalSettings    settings  = read_settings(context);
-      const ExtraConstraints extra     = read_extra_constraints(context.prm);
-      const bool             supported = has_supports(p) || !extra.edge_supports.empty() ||
-                                       !extra.mirror_ties.empty();
-      // Static quantities have no meaning for a mode: say so rather than drop them silently.
-      std::string ignored;
-      for (const auto &[name, value] :
-           {std::pair<std::string, std::string>{"Points", p.points}, {"Reactions", p.reactions},
-            {"Mean displacements", p.mean_displacements}, {"Rotations", p.rotations},
-            {"Region maxima", p.region_maxima}})
-        if (!value.empty())
-          ignored += (ignored.empty() ? "" : ", ") + ("Quantities/" + name);
-      if (root && !ignored.empty())
-        std::cout << "note: a modal analysis reports frequencies, effective masses and Derived "
-                     "quantities; ignored here: "
-                  << ignored << "\n";
-      LinearElasticProblem<dim> problem(p, context.geometry, comm,
-                                        choose_mesh_partition(context, p, "the modal analysis (constraints gathered on every rank)"));
+      std::unique_ptr<LinearElasticProblem<dim>> problem;
+      std::unique_ptr<dealii::PETScWrappers::MPI::SparseMatrix> mass; // not movable itself
+      EigenResult                                 result;
+      EigenSettings                               eigen;
+      Quantities                                  q;
+      bool                                        supported = false, stopped_for_check = false;
+    };
+
+    template <int dim>
+    ModalModel<dim> solve_modal_model(const RunContext &context, const CaseParameters &p, const ModalSettings &settings)
+    {
+      MPI_Comm               comm = context.communicator;
+      dealii::Timer          timer;
+      ModalModel<dim>        model;
+      const ExtraConstraints extra = read_extra_constraints(context.prm);
+      model.supported = has_supports(p) || !extra.edge_supports.empty() || !extra.mirror_ties.empty();
+      model.problem   = std::make_unique<LinearElasticProblem<dim>>(
+        p, context.geometry, comm, choose_mesh_partition(context, p, "the modal analysis (constraints gathered on every rank)"));
+      auto &problem = *model.problem;
       // Supports hold still in a vibration: the constraints without their prescribed values.
       dealii::AffineConstraints<double> constraints;
       try
@@ -160,87 +162,137 @@ namespace compliant
         throw InputError("case file '" + p.case_file + "': Modal/Number of modes = " +
                          std::to_string(settings.n_modes) + " is too many for " +
                          std::to_string(problem.dof_handler.n_dofs()) + " DoFs");
-      if (report_mesh_and_stop_if_check(context, problem.triangulation.n_global_active_cells(),
-                                        problem.dof_handler.n_dofs(), supported ? "" : ", no supports (free)"))
-        return 0;
+      const RunContext model_context{p, context.prm, context.geometry, context.check_only, comm};
+      if (report_mesh_and_stop_if_check(model_context, problem.triangulation.n_global_active_cells(),
+                                        problem.dof_handler.n_dofs(), model.supported ? "" : ", no supports (free)"))
+        {
+          model.stopped_for_check = true;
+          return model;
+        }
 
       const auto sparsity = install_constraints(problem, std::move(constraints));
       problem.assemble(); // the stiffness; the load vector is not used
-      dealii::PETScWrappers::MPI::SparseMatrix mass;
-      dealii::Timer                            mass_timer;
-      assemble_mass_matrix(problem, sparsity, mass);
+      dealii::Timer mass_timer;
+      model.mass = std::make_unique<dealii::PETScWrappers::MPI::SparseMatrix>();
+      assemble_mass_matrix(problem, sparsity, *model.mass);
       const double mass_seconds = mass_timer.wall_time();
 
-      EigenSettings eigen;
+      auto &eigen          = model.eigen;
       eigen.n_modes        = settings.n_modes;
       eigen.tolerance      = settings.tolerance;
       eigen.max_iterations = settings.max_iterations;
       eigen.petsc_options  = p.petsc_options;
       const double two_pi  = 2 * M_PI;
       if (settings.auto_shift)
-        eigen.shift = -auto_shift_fraction * diagonal_ratio_bound(problem.system_matrix, mass,
+        eigen.shift = -auto_shift_fraction * diagonal_ratio_bound(problem.system_matrix, *model.mass,
                                                                   problem.locally_owned_dofs,
                                                                   problem.constraints, comm);
       else
         eigen.shift = std::copysign(std::pow(two_pi * settings.shift_frequency, 2),
                                     settings.shift_frequency);
       dealii::Timer eigen_timer;
-      EigenResult   result =
-        solve_eigenproblem(problem.system_matrix, mass, problem.locally_owned_dofs, eigen);
+      model.result = solve_eigenproblem(problem.system_matrix, *model.mass, problem.locally_owned_dofs, eigen);
       const double eigen_seconds = eigen_timer.wall_time();
 
-      RunSummary summary =
-        start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
-      summary.settings.insert({"eigensolver", "SLEPc Krylov-Schur, shift-and-invert, MUMPS"});
-      summary.settings.insert({"mass_matrix", "consistent"});
-      summary.settings.insert({"supports", supported ? "Dirichlet boundaries held fixed" : "none (free)"});
-      if (!ignored.empty())
-        summary.settings.insert({"ignored_quantities", ignored});
-      auto &q            = summary.quantities;
+      auto &q            = model.q;
       q["n_dofs"]        = problem.dof_handler.n_dofs();
       q["n_cells"]       = problem.triangulation.n_global_active_cells();
       q["n_ranks"]       = dealii::Utilities::MPI::n_mpi_processes(comm);
       q["total_mass"]    = total_mass(problem);
       q["eigen_shift"]   = eigen.shift;
-      q["eigensolver_iterations"] = result.iterations;
+      q["eigensolver_iterations"] = model.result.iterations;
       double worst_error          = 0;
-      for (const double e : result.backward_errors)
+      for (const double e : model.result.backward_errors)
         worst_error = std::max(worst_error, e);
       q["eigen_backward_error_max"] = worst_error;
 
-      add_frequencies_and_effective_masses(problem, mass, result, q);
+      add_frequencies_and_effective_masses(problem, *model.mass, model.result, q);
       q["time_setup"]      = problem.statistics.setup_seconds;
       q["time_assembly"]   = problem.statistics.assembly_seconds + mass_seconds;
       q["time_eigensolve"] = eigen_seconds;
       q["time_total"]      = timer.wall_time();
+      return model;
+    }
 
-      if (root)
+    template <int dim>
+    void print_modes(const ModalModel<dim> &model)
+    {
+      const auto &q = model.q;
+      std::cout << "Eigensolver: " << model.result.n_converged << " pairs converged, " << model.result.iterations
+                << " restarts, shift " << model.eigen.shift << ", " << q.at("time_eigensolve")
+                << " s\n  mode  frequency (Hz)  effective mass fraction";
+      for (unsigned int d = 0; d < dim; ++d)
+        std::cout << "  " << axis_name[d];
+      std::cout << "\n";
+      for (unsigned int n = 0; n < model.result.eigenvalues.size(); ++n)
         {
-          std::cout << "Eigensolver: " << result.n_converged << " pairs converged, "
-                    << result.iterations << " restarts, shift " << eigen.shift << ", "
-                    << eigen_seconds << " s\n  mode  frequency (Hz)  effective mass fraction";
+          const std::string id = std::to_string(n + 1);
+          std::cout << "  " << std::setw(4) << n + 1 << "  " << std::setw(14) << std::setprecision(8)
+                    << q.at("frequency_" + id) << "  ";
           for (unsigned int d = 0; d < dim; ++d)
-            std::cout << "  " << axis_name[d];
+            std::cout << std::setw(10) << std::setprecision(4)
+                      << q.at("effective_mass_fraction_" + std::string(axis_name[d]) + "_" + id);
           std::cout << "\n";
-          for (unsigned int n = 0; n < result.eigenvalues.size(); ++n)
-            {
-              const std::string id = std::to_string(n + 1);
-              std::cout << "  " << std::setw(4) << n + 1 << "  " << std::setw(14)
-                        << std::setprecision(8) << q["frequency_" + id] << "  ";
-              for (unsigned int d = 0; d < dim; ++d)
-                std::cout << std::setw(10) << std::setprecision(4)
-                          << q["effective_mass_fraction_" + std::string(axis_name[d]) + "_" + id];
-              std::cout << "\n";
-            }
-          std::cout << std::flush;
+        }
+      std::cout << std::flush;
+    }
+
+    template <int dim>
+    int run(const RunContext &context)
+    {
+      const auto         &p    = context.parameters;
+      const bool          root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
+      const ModalSettings settings = read_settings(context);
+      // Static quantities have no meaning for a mode: say so rather than drop them silently.
+      std::string ignored;
+      for (const auto &[name, value] :
+           {std::pair<std::string, std::string>{"Points", p.points}, {"Reactions", p.reactions},
+            {"Mean displacements", p.mean_displacements}, {"Rotations", p.rotations},
+            {"Region maxima", p.region_maxima}})
+        if (!value.empty())
+          ignored += (ignored.empty() ? "" : ", ") + ("Quantities/" + name);
+      if (root && !ignored.empty())
+        std::cout << "note: a modal analysis reports frequencies, effective masses and Derived "
+                     "quantities; ignored here: "
+                  << ignored << "\n";
+      auto model = solve_modal_model<dim>(context, p, settings);
+      if (model.stopped_for_check)
+        return 0;
+      auto &problem = *model.problem;
+      if (root)
+        print_modes(model);
+
+      RunSummary summary =
+        start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
+      summary.settings.insert({"eigensolver", "SLEPc Krylov-Schur, shift-and-invert, MUMPS"});
+      summary.settings.insert({"mass_matrix", "consistent"});
+      summary.settings.insert({"supports", model.supported ? "Dirichlet boundaries held fixed" : "none (free)"});
+      if (!ignored.empty())
+        summary.settings.insert({"ignored_quantities", ignored});
+      summary.quantities = model.q;
+      if (p.error_estimates)
+        {
+          // Frequencies one degree up (the eigenvalue's dual is its own mode): the same modes in
+          // the same order, ascending.
+          Quantities frequencies{{"n_cells", model.q.at("n_cells")}}; // for the memory check
+          for (const auto &[name, value] : model.q)
+            if (name.rfind("frequency_", 0) == 0)
+              frequencies[name] = value;
+          const auto estimates = estimate_quantity_errors<dim>(
+            context, p, frequencies, problem.triangulation.all_reference_cells_are_hyper_cube(),
+            [&](const RunContext &enriched_context, const CaseParameters &enriched) {
+              const auto plus = solve_modal_model<dim>(enriched_context, enriched, settings);
+              return std::make_pair(plus.q, static_cast<std::size_t>(plus.problem->dof_handler.n_dofs()));
+            });
+          add_error_estimates(summary, estimates);
         }
 
-      for (auto &x : result.eigenvectors)
+      for (auto &x : model.result.eigenvectors)
         problem.constraints.distribute(x);
       auto variables   = problem.expression_variables();
       variables["rho"] = problem.materials.begin()->second.density;
       finish_run(context, summary, variables, [&](const std::string &directory) {
-        write_mode_shapes(problem, result.eigenvectors, directory);
+        write_mode_shapes(problem, model.result.eigenvectors, directory);
       });
       return 0;
     }

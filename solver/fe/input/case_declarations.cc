@@ -234,7 +234,8 @@ namespace compliant
                           "element nodes; per step in a nonlinear curve.csv. Linear static, "
                           "linkage and nonlinear static analyses.");
         prm.declare_entry("Error estimates", "false", Patterns::Bool(),
-                          "Linear static: each quantity's discretization error, estimated by the "
+                          "Linear static and modal: each quantity's (modal: each frequency's) "
+                          "discretization error, estimated by the "
                           "dual-weighted residual with the dual at one degree more than the element's "
                           "(one extra solve on the same mesh serves every quantity), reported "
                           "beside its value as <name>_error_estimate (relative) and "
