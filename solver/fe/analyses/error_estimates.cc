@@ -78,6 +78,13 @@ namespace compliant
           }
         estimates.dual_dofs = model.problem->dof_handler.n_dofs();
       }
+    if (plus.empty())
+      {
+        estimates.how = "not computed: the enriched model did not complete the same path";
+        if (root)
+          std::cout << "Error estimates: " << estimates.how << std::endl;
+        return estimates;
+      }
     estimates.available    = true;
     estimates.dual_seconds = timer.wall_time();
     // A component that is round-off next to its siblings (displacement_outer_y of a radial

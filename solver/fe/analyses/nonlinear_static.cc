@@ -1,5 +1,7 @@
 #include "analyses/nonlinear_static.h"
 
+#include "analyses/error_estimates.h"
+
 #include "analyses/buckling_parts.h"
 #include "analyses/interruption.h"
 #include "analyses/response_curve.h"
@@ -380,6 +382,47 @@ namespace compliant
   template int run_nonlinear_static<2>(const RunContext &, const std::function<void(RunSummary &)> &);
   template int run_nonlinear_static<3>(const RunContext &, const std::function<void(RunSummary &)> &);
 
+  namespace
+  {
+    // Quantities/Error estimates at finite strain: the same path one degree up (its quantities at
+    // the last converged step) against this one's. To leading order J(u+) - J(u_p) is the DWR
+    // estimate with the dual of the tangent at the converged state on the enriched space. The
+    // enriched run writes to a scratch directory inside the output directory, removed after.
+    template <int dim>
+    int run_with_estimates(const RunContext &context)
+    {
+      const auto &p = context.parameters;
+      if (!p.error_estimates || context.check_only)
+        return run_nonlinear_static<dim>(context);
+      const auto amend = [&](RunSummary &summary) {
+        const auto estimates = estimate_quantity_errors<dim>(
+          context, p, summary.quantities, summary.settings.count("cell_type") == 0 || summary.settings.at("cell_type") == "hypercube",
+          [&](const RunContext &enriched_context, const CaseParameters &enriched) {
+            CaseParameters scratch   = enriched;
+            scratch.output_directory = p.output_directory + "/.error_estimate";
+            scratch.write_fields     = false;
+            const RunContext scratch_context{scratch, enriched_context.prm, enriched_context.geometry, false,
+                                             enriched_context.communicator};
+            Quantities       plus;
+            std::size_t      dofs = 0;
+            const int        rc = run_nonlinear_static<dim>(scratch_context, [&](RunSummary &enriched_summary) {
+              plus = enriched_summary.quantities;
+              dofs = static_cast<std::size_t>(enriched_summary.quantities.at("n_dofs"));
+            });
+            if (dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0)
+              std::filesystem::remove_all(scratch.output_directory);
+            // A path that stopped short ends elsewhere: nothing to compare.
+            if (rc != 0 || plus.count("load_factor") == 0 || summary.quantities.count("load_factor") == 0 ||
+                plus.at("load_factor") != summary.quantities.at("load_factor"))
+              plus.clear();
+            return std::make_pair(plus, dofs);
+          });
+        add_error_estimates(summary, estimates);
+      };
+      return run_nonlinear_static<dim>(context, amend);
+    }
+  } // namespace
+
   Analysis nonlinear_static_analysis()
   {
     return {{"nonlinear static",
@@ -387,8 +430,8 @@ namespace compliant
             "subsection Finite strain)",
             declare},
             [](const RunContext &context) {
-              return context.parameters.dimension == 2 ? run_nonlinear_static<2>(context) :
-                                                         run_nonlinear_static<3>(context);
+              return context.parameters.dimension == 2 ? run_with_estimates<2>(context) :
+                                                         run_with_estimates<3>(context);
             }};
   }
 } // namespace compliant

@@ -354,9 +354,9 @@ namespace compliant
     p.region_maxima      = prm.get("Region maxima");
     p.stress_points      = prm.get("Stress points");
     p.error_estimates    = prm.get_bool("Error estimates");
-    if (p.error_estimates && p.analysis != "linear static" && p.analysis != "modal")
+    if (p.error_estimates && p.analysis != "linear static" && p.analysis != "modal" && p.analysis != "nonlinear static")
       throw InputError("case file '" + p.case_file + "', Quantities/Error estimates: estimates are made for "
-                       "linear static and modal analyses, not a " + p.analysis + " analysis");
+                       "linear static, nonlinear static and modal analyses, not a " + p.analysis + " analysis");
     prm.leave_subsection();
 
     prm.enter_subsection("Comparison");
