@@ -2,8 +2,9 @@
 // (issue 28, item 5): on meshes/spline_profile_2d.geo (a BSpline notch, a Catmull-Rom Spline
 // bottom) refined twice, every vertex and every support point of the mapping (degree 3, the
 // element's) on those curves lies on gmsh's curve to 1e-8 of the bar's length, where the chords'
-// midpoints miss it by about 1e-3; and the elliptical hole's Ellipse arcs are followed, not
-// straightened.
+// midpoints miss it by about 1e-5 of it; the elliptical hole's Ellipse arcs are followed, not
+// straightened; and in 3D the hole's faces (extruded ellipse arcs: gmsh surfaces sampled on a
+// grid) hold every refined vertex and mapping point on x^2/4 + y^2 = 1.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/tria.h>
@@ -111,4 +112,43 @@ TEST(SampledBoundaries, EllipseArcsFollowed)
           EXPECT_NEAR(x[0] * x[0] / 4 + x[1] * x[1], 1, 1e-12);
         }
     }
+}
+
+TEST(SampledBoundaries, ExtrudedEllipseSurfaces)
+{
+  const MeshedGeometry geometry = mesh_geometry(meshes + "elliptical_hole_3d.geo", {});
+  ASSERT_EQ(geometry.curved.exact.size(), 2u);
+  for (const auto &face : geometry.curved.exact)
+    EXPECT_EQ(face.shape, CurvedBoundary::sampled_surface);
+  dealii::Triangulation<3> triangulation;
+  create_triangulation(triangulation, geometry, 1, {}, 2);
+  const dealii::MappingQ<3> mapping(2);
+  const int                 hole = geometry.boundary_ids.at("hole");
+  double                    vertex = 0, mapped = 0;
+  unsigned int              n_faces = 0;
+  const auto on_ellipse = [](const dealii::Point<3> &p) { return std::abs(p[0] * p[0] / 4 + p[1] * p[1] - 1); };
+  for (const auto &cell : triangulation.active_cell_iterators())
+    for (unsigned int f = 0; f < cell->n_faces(); ++f)
+      if (cell->face(f)->at_boundary() && int(cell->face(f)->boundary_id()) == hole)
+        {
+          ++n_faces;
+          for (unsigned int v = 0; v < 4; ++v)
+            vertex = std::max(vertex, on_ellipse(cell->face(f)->vertex(v)));
+          // The face's centre and edge midpoints in the cell's unit coordinates: mapping points.
+          const unsigned int normal = f / 2;
+          for (const double s : {0., 0.5, 1.})
+            for (const double t : {0., 0.5, 1.})
+              {
+                dealii::Point<3> unit;
+                unit[normal]           = f % 2;
+                unit[(normal + 1) % 3] = s;
+                unit[(normal + 2) % 3] = t;
+                mapped = std::max(mapped, on_ellipse(mapping.transform_unit_to_real_cell(cell, unit)));
+              }
+        }
+  std::cout << "extruded ellipse, 1 refinement: " << n_faces << " hole faces, vertices off the ellipse by "
+            << vertex << ", mapping points by " << mapped << " (|x^2/4 + y^2 - 1|)\n";
+  EXPECT_EQ(n_faces, 6u * 4u); // 6 x 1 faces of the quarter hole, each cut in 4
+  EXPECT_LT(vertex, 1e-9);
+  EXPECT_LT(mapped, 1e-9);
 }
