@@ -1,7 +1,7 @@
 // The shapes mesh/curved_entities.h recognises in a gmsh geometry, against the geometry that was
 // drawn: a circle's centre and radius, a cylinder on an oblique axis, a sphere; an ellipse, a
-// spline and a torus are curved but none of these (kept straight and named); planes and lines
-// are not reported at all.
+// spline and a torus are curved but none of these (followed through samples of their
+// parametrization, on the shape to 1e-9); planes and lines are not reported at all.
 #include "mesh/gmsh_geometry.h"
 
 #include <gtest/gtest.h>
@@ -51,18 +51,32 @@ TEST(CurvedEntities, PlaneShapes)
     Plane Surface(1) = {1, 2, 3};
     Physical Curve("outside") = {1, 2, 3, 4}; Physical Surface("body") = {1};
   )");
-  ASSERT_EQ(g.curved.exact.size(), 4u); // the four quarter arcs of the hole
+  ASSERT_EQ(g.curved.exact.size(), 9u); // the hole's four arcs, the ellipse's four, the spline
+  int ellipse_arcs = 0;
   for (const auto &arc : g.curved.exact)
-    {
-      EXPECT_EQ(arc.shape, CurvedBoundary::circle);
-      EXPECT_NEAR(arc.centre[0], 5, 1e-9);
-      EXPECT_NEAR(arc.centre[1], 4, 1e-9);
-      EXPECT_NEAR(arc.radius, 1.5, 1e-9);
-      EXPECT_FALSE(arc.face_centres.empty());
-    }
-  EXPECT_EQ(count_named(g.curved, "Ellipse"), 4);
-  EXPECT_EQ(count_named(g.curved, "Nurb"), 1); // gmsh calls the built-in kernel's BSpline "Nurb"
-  EXPECT_EQ(g.curved.straightened.size(), 5u); // nothing straight is reported
+    if (arc.shape == CurvedBoundary::sampled_curve)
+      {
+        for (std::size_t i = 0; i < arc.samples.u.size(); ++i)
+          {
+            const double *x = arc.samples.data.data() + 6 * i;
+            if (std::abs(x[0] - 9.5) < 1.01 && std::abs(x[1] - 4) < 2.01) // an ellipse arc's sample
+              {
+                EXPECT_NEAR((x[0] - 9.5) * (x[0] - 9.5) + (x[1] - 4) * (x[1] - 4) / 4, 1, 1e-11);
+              }
+          }
+        ellipse_arcs += arc.samples.data[1] < 7; // the spline runs at y >= 8
+      }
+  EXPECT_EQ(ellipse_arcs, 4);
+  for (const auto &arc : g.curved.exact)
+    if (arc.shape != CurvedBoundary::sampled_curve)
+      {
+        EXPECT_EQ(arc.shape, CurvedBoundary::circle);
+        EXPECT_NEAR(arc.centre[0], 5, 1e-9);
+        EXPECT_NEAR(arc.centre[1], 4, 1e-9);
+        EXPECT_NEAR(arc.radius, 1.5, 1e-9);
+        EXPECT_FALSE(arc.face_centres.empty());
+      }
+  EXPECT_TRUE(g.curved.straightened.empty()); // every curve followed, nothing straight reported
 }
 
 TEST(CurvedEntities, SolidShapes)
@@ -78,7 +92,7 @@ TEST(CurvedEntities, SolidShapes)
     BooleanDifference(5) = {Volume{1}; Delete;}{Volume{2, 3, 4}; Delete;};
     Physical Volume("body") = {5};
   )");
-  int cylinders = 0, spheres = 0;
+  int cylinders = 0, spheres = 0, others = 0;
   for (const auto &s : g.curved.exact)
     if (s.shape == CurvedBoundary::cylinder)
       {
@@ -98,8 +112,20 @@ TEST(CurvedEntities, SolidShapes)
         EXPECT_NEAR(s.centre[2], 5, 1e-9);
         EXPECT_NEAR(s.radius, 1.4, 1e-9);
       }
+    else if (s.shape == CurvedBoundary::sampled_surface)
+      {
+        // The torus: its samples on (rho - 1.3)^2 + (z - 5)^2 = 0.5^2, rho from its axis.
+        ++others;
+        for (std::size_t k = 0; k < s.samples.data.size(); k += 12)
+          {
+            const double *x   = s.samples.data.data() + k;
+            const double  rho = std::hypot(x[0] - 7.5, x[1] - 2.5) - 1.3;
+            EXPECT_NEAR(std::hypot(rho, x[2] - 5), 0.5, 1e-9);
+          }
+      }
   EXPECT_GE(cylinders, 1);
   EXPECT_GE(spheres, 1);
-  EXPECT_GE(count_named(g.curved, "Torus"), 1);
+  EXPECT_EQ(others, 1);
+  EXPECT_TRUE(g.curved.straightened.empty());
   EXPECT_EQ(count_named(g.curved, "Plane"), 0);
 }

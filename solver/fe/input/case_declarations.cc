@@ -88,12 +88,14 @@ namespace compliant
                           "and 3D, quadrilaterals/hexahedra, degree 2 or 3, solved by MUMPS. "
                           "Finite strain has its own Finite strain/Formulation.");
         prm.declare_entry("Curved boundaries", "true", Patterns::Bool(),
-                          "true: boundaries the gmsh geometry draws as circles (2D) or cylinders "
-                          "and spheres (3D) stay on that shape: refinement puts new vertices on it "
-                          "and the cells touching it are mapped with the element degree "
-                          "(isoparametric), so quadratic elements keep their order on holes and "
-                          "notches. Other curved shapes (splines, ellipses) and .msh meshes are "
-                          "straight-sided, as the log says. false: every cell straight-sided.");
+                          "true: every curved boundary of the gmsh geometry (curves in 2D, "
+                          "surfaces in 3D: circles, cylinders and spheres exactly, ellipses, "
+                          "splines and CAD patches through samples of their parametrization) stays "
+                          "on its shape: refinement puts new vertices on it and the cells touching "
+                          "it are mapped with the element degree (isoparametric), so quadratic "
+                          "elements keep their order on holes and notches. .msh meshes, and any "
+                          "entity gmsh cannot evaluate, are straight-sided, as the log says. "
+                          "false: every cell straight-sided.");
         prm.declare_entry("Mesh partition", "auto", Patterns::Selection("auto|shared|distributed"),
                           "How the mesh is spread over MPI ranks. shared: every rank holds the "
                           "whole mesh and owns a METIS part. distributed: each rank holds only its "

@@ -16,19 +16,21 @@ namespace compliant
     {
       if (!curved.exact.empty())
         {
-          const char *names[] = {"circle", "cylinder", "sphere"};
-          unsigned int counts[3] = {0, 0, 0};
+          // In the order of CurvedBoundary::Shape; the last two followed through their samples.
+          const char  *names[]   = {"circle", "cylinder", "sphere", "other curve", "other surface"};
+          unsigned int counts[5] = {0, 0, 0, 0, 0};
           for (const auto &boundary : curved.exact)
             ++counts[boundary.shape];
           std::cout << "Curved boundaries:";
-          for (unsigned int s = 0; s < 3; ++s)
+          for (unsigned int s = 0; s < 5; ++s)
             if (counts[s] > 0)
-              std::cout << " " << counts[s] << " " << names[s] << (counts[s] > 1 ? "s" : "");
+              std::cout << " " << counts[s] << " " << names[s] << (counts[s] > 1 ? "s" : "")
+                        << (s >= CurvedBoundary::sampled_curve ? " (sampled)" : "");
           std::cout << " follow the geometry; cells mapped at the element degree\n";
         }
       for (const auto &entity : curved.straightened)
         std::cout << "Curved boundaries: " << entity
-                  << " is neither circle, cylinder nor sphere: its faces stay straight\n";
+                  << ": its faces stay straight\n";
     }
   } // namespace
 

@@ -1,5 +1,7 @@
 #include "mesh/curved_entities.h"
 
+#include "mesh/gmsh_sampling.h"
+
 #include <gmsh.h>
 
 #include <algorithm>
@@ -134,8 +136,8 @@ namespace compliant
       return largest;
     }
 
-    // Samples of a curve of the xy plane; true and the circle if it is one, else shape = -1 for
-    // a straight line and -2 for another curve.
+    // Samples of a curve of the xy plane: the circle's shape if it is one, else -1 for a straight
+    // line and -2 for another curve.
     int classify_curve(const int tag, CurvedBoundary &boundary)
     {
       std::vector<double> min, max;
@@ -311,20 +313,28 @@ namespace compliant
           continue; // a .msh file's entity: no geometry behind the mesh
         CurvedBoundary boundary;
         boundary.entity = tag;
-        int shape       = -2;
+        int         shape = -2;
+        std::string why   = "gmsh cannot evaluate its parametrization";
         try
           {
             shape = dim == 1 ? classify_curve(tag, boundary) : classify_surface(tag, boundary);
           }
         catch (...) // gmsh cannot evaluate this entity: keep its faces straight, and say so
           {
+            shape = -3;
           }
         if (shape == -1)
           continue;
-        if (shape == -2)
+        if (shape == -2) // curved, and neither circle, cylinder nor sphere: follow its samples
+          {
+            why   = sample_entity(dim, tag, boundary.samples);
+            shape = why.empty() ? (dim == 1 ? CurvedBoundary::sampled_curve : CurvedBoundary::sampled_surface) : -3;
+            boundary.shape = shape;
+          }
+        if (shape == -3)
           {
             result.straightened.push_back((dim == 1 ? "curve " : "surface ") + std::to_string(tag) +
-                                          " (" + type + ")");
+                                          " (" + type + "): " + why);
             continue;
           }
         boundary.face_centres = element_centres(dim, tag, node_index, node_xyz);

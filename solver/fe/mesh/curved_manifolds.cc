@@ -8,6 +8,7 @@
 #include <deal.II/grid/manifold_lib.h>
 
 #include "mesh/curved_simplex_mapping.h"
+#include "mesh/sampled_manifold.h"
 
 #include <algorithm>
 #include <limits>
@@ -20,7 +21,8 @@ namespace compliant
   {
     bool fits_dimension(const CurvedBoundary &boundary, const int dim)
     {
-      return dim == 2 ? boundary.shape == CurvedBoundary::circle : boundary.shape != CurvedBoundary::circle;
+      const bool plane = boundary.shape == CurvedBoundary::circle || boundary.shape == CurvedBoundary::sampled_curve;
+      return dim == 2 ? plane : !plane;
     }
   } // namespace
 
@@ -157,7 +159,9 @@ namespace compliant
         dealii::Point<dim> centre;
         for (unsigned int d = 0; d < dim; ++d)
           centre[d] = boundary.centre[d];
-        if (boundary.shape == CurvedBoundary::cylinder)
+        if (boundary.shape == CurvedBoundary::sampled_curve || boundary.shape == CurvedBoundary::sampled_surface)
+          triangulation.set_manifold(b, SampledManifold<dim>(std::make_shared<const SampledShape>(boundary.samples)));
+        else if (boundary.shape == CurvedBoundary::cylinder)
           {
             dealii::Tensor<1, 3> axis;
             dealii::Point<3>     on_axis;

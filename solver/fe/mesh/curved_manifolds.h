@@ -1,5 +1,6 @@
-// The circles, cylinders and spheres gmsh found among the boundaries (mesh/curved_entities.h)
-// as deal.II manifolds: refinement puts new vertices on the true surface, and a mapping of the
+// The curved boundaries gmsh found (mesh/curved_entities.h) as deal.II manifolds: circles,
+// cylinders and spheres by their closed forms, any other curve or surface by its samples
+// (mesh/sampled_manifold.h). Refinement puts new vertices on the true surface, and a mapping of the
 // element's degree curves the cells that touch it.
 #pragma once
 

@@ -29,7 +29,7 @@ namespace compliant
     std::map<std::string, int> boundary_ids; // physical groups of dimension-1
     std::map<std::string, int> material_ids; // physical groups of full dimension
     std::size_t                n_cells = 0;
-    CurvedEntities             curved; // circles, cylinders, spheres among the boundaries
+    CurvedEntities             curved; // the curved boundaries (followed or not)
   };
 
   // Sets the given parameters, meshes a .geo (or loads a .msh) and returns the mesh text with
