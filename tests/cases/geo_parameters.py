@@ -55,6 +55,7 @@ BAD = {
     "patch_test": ("plane stress", "extrude=-0.05", "extrude >= 0"),
     "pinned_bar_2d": ("plane stress", "rp=10", "0 < rp < w/2"),
     "plate_3d": ("3d", "nz=0", "nx, ny, nz >= 1"),
+    "plate_circular_hole_2d": ("plane stress", "a=6", "0 < a < W, a < H"),
     "plate_quarter_3d": ("3d", "t=0", "a, b, t > 0"),
     "section_angle": ("section", "t=40", "0 < t < b1"),
     "section_channel": ("section", "r=50", "0 <= r < bf - tw"),
