@@ -4,6 +4,8 @@
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/numerics/error_estimator.h>
 
+#include "analyses/error_estimates.h"
+#include "input/spec_list.h"
 #include "quantities/comparison.h"
 #include "quantities/goal_functionals.h"
 
@@ -49,11 +51,6 @@ namespace compliant
       return flags;
     }
 
-    bool is_result(const std::string &name)
-    {
-      return !(name.rfind("n_", 0) == 0 || name.rfind("time_", 0) == 0 || name.rfind("solver_", 0) == 0);
-    }
-
     // The relative sensitivity |dJ/dq q / J| of target J to each quantity q it depends on: 1 for
     // J itself unless J is derived, then by central differences of the Derived expressions.
     std::map<std::string, double> sensitivities(const std::string &target, const Quantities &values,
@@ -61,22 +58,12 @@ namespace compliant
     {
       // The names the expressions define ('name = expression; ...') are not base quantities.
       std::set<std::string> defined;
-      for (std::size_t start = 0; start < derived.size();)
-        {
-          const std::size_t end = std::min(derived.find(';', start), derived.size());
-          const std::string item = derived.substr(start, end - start);
-          if (const auto equals = item.find('='); equals != std::string::npos)
-            {
-              std::string name = item.substr(0, equals);
-              name.erase(0, name.find_first_not_of(" \t"));
-              name.erase(name.find_last_not_of(" \t") + 1);
-              defined.insert(name);
-            }
-          start = end + 1;
-        }
+      for (const auto &item : split(derived, ';'))
+        if (const auto equals = item.find('='); equals != std::string::npos)
+          defined.insert(trim(item.substr(0, equals)));
       Quantities base;
       for (const auto &[n, v] : values)
-        if (is_result(n) && defined.count(n) == 0)
+        if (has_error_estimate(n) && defined.count(n) == 0)
           base[n] = v;
       Quantities evaluated = base;
       try
