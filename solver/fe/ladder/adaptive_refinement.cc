@@ -51,11 +51,14 @@ namespace compliant
       return flags;
     }
 
-    // The relative sensitivity |dJ/dq q / J| of target J to each quantity q it depends on: 1 for
-    // J itself unless J is derived, then by central differences of the Derived expressions.
-    std::map<std::string, double> sensitivities(const std::string &target, const Quantities &values,
+    // The linearization of target J in the quantities it depends on, relative: c_q = (dJ/dq) / J,
+    // signed, so that dJ / J = sum_q c_q dq (errors of parts that cancel in J cancel in its dual).
+    // 1 / J for J itself unless J is derived, then by central differences of the Derived expressions.
+    std::map<std::string, double> linearization(const std::string &target, const Quantities &values,
                                                 const std::string &derived, const std::map<std::string, double> &variables)
     {
+      const double value = values.count(target) ? values.at(target) : 1.0;
+      const std::map<std::string, double> itself{{target, 1 / (value != 0 ? value : 1.0)}};
       // The names the expressions define ('name = expression; ...') are not base quantities.
       std::set<std::string> defined;
       for (const auto &item : split(derived, ';'))
@@ -72,13 +75,13 @@ namespace compliant
         }
       catch (const std::invalid_argument &)
         {
-          return {{target, 1.0}};
+          return itself;
         }
       // A target the expressions do not produce is a computed quantity.
       if (derived.find(target) == std::string::npos || base.count(target) > 0 || evaluated.count(target) == 0)
-        return {{target, 1.0}};
+        return itself;
       const double                  j = evaluated.at(target);
-      std::map<std::string, double> s;
+      std::map<std::string, double> c;
       for (const auto &[n, v] : base)
         if (derived.find(n) != std::string::npos)
           {
@@ -89,9 +92,9 @@ namespace compliant
             add_derived_quantities(derived, minus, variables);
             const double derivative = (plus.at(target) - minus.at(target)) / (2 * h);
             if (std::isfinite(derivative) && derivative != 0 && j != 0)
-              s[n] = std::abs(derivative * v / j);
+              c[n] = derivative / j;
           }
-      return s.empty() ? std::map<std::string, double>{{target, 1.0}} : s;
+      return c.empty() ? itself : c;
     }
   } // namespace
 
@@ -101,6 +104,9 @@ namespace compliant
     return flags_from(problem, kelly_indicators(problem, problem.solution), cell_fraction);
   }
 
+  // One dual per target: the right-hand sides of its parts combined by the target's linearization,
+  // so that a derived target's dual sees where the errors of its parts cancel (J = M / (G theta')
+  // of a bar in torsion depends on the section between the measuring points only).
   template <int dim>
   std::vector<bool> goal_oriented_refine_flags(LinearElasticProblem<dim> &problem,
                                                const std::vector<std::string> &targets, const Quantities &values,
@@ -109,30 +115,51 @@ namespace compliant
     const Vector<float> primal = kelly_indicators(problem, problem.solution);
     // Energy-like goals: ||e||_K^2 relative to a(u, u) = 2 U.
     const double energy = 2 * std::abs(values.count("strain_energy") ? values.at("strain_energy") : 1.0);
-    Vector<float>   indicators(primal.size());
-    const auto      homogeneous = problem.homogeneous_constraints();
-    std::map<std::string, Vector<float>> dual_indicators; // one dual per quantity, however many targets use it
+    Vector<float> energy_density = primal;
+    energy_density.scale(primal);
+    Vector<float> indicators(energy_density.size());
+    const auto    homogeneous = problem.homogeneous_constraints();
     how.clear();
     for (const auto &target : targets)
       {
-        std::string used;
-        for (const auto &[q, weight] : sensitivities(target, values, derived, problem.expression_variables()))
+        std::string                used;
+        PETScWrappers::MPI::Vector rhs(problem.locally_owned_dofs, problem.communicator);
+        PETScWrappers::MPI::Vector liftings(problem.locally_owned_dofs, problem.communicator);
+        bool                       has_dual = false;
+        for (const auto &[q, c] : linearization(target, values, derived, problem.expression_variables()))
           {
-            if (dual_indicators.count(q) == 0)
+            PETScWrappers::MPI::Vector j, lifting;
+            const bool linear = assemble_goal_functional(problem, q, values, homogeneous, j, lifting);
+            if (linear)
               {
-                PETScWrappers::MPI::Vector j;
-                if (assemble_goal_functional(problem, q, values, homogeneous, j))
-                  dual_indicators[q] = kelly_indicators(problem, problem.solve_dual(j));
-                else
-                  dual_indicators[q] = Vector<float>(); // energy-like
+                // A mollified point value is not the point value (a bump cut by the part's faces
+                // averages a smaller lever): scaled to it, so that parts which cancel in the
+                // target still cancel in its dual.
+                const double mollified = lifting.size() == 0 ? j * problem.solution : 0.0;
+                const double value     = values.count(q) ? values.at(q) : 0.0;
+                if (mollified != 0 && value / mollified > 0.1 && value / mollified < 10)
+                  j *= value / mollified;
+                rhs.add(c, j);
+                if (lifting.size() > 0)
+                  liftings.add(c, lifting);
+                has_dual = true;
               }
-            const auto  &dual  = dual_indicators.at(q);
-            const double value = std::max(std::abs(values.count(q) ? values.at(q) : 1.0), 1e-300);
-            for (unsigned int k = 0; k < indicators.size(); ++k)
-              indicators[k] += weight * (dual.size() > 0 ? primal[k] * dual[k] / value : primal[k] * primal[k] / energy);
-            used += (used.empty() ? "" : ", ") + q + (dual.size() > 0 ? " (dual)" : " (energy-like)");
+            else
+              indicators.add(std::abs(c * (values.count(q) ? values.at(q) : 1.0)) / energy, energy_density);
+            used += (used.empty() ? "" : ", ") + q + (linear ? (lifting.size() > 0 ? " (reaction)" : "") : " (energy-like)");
           }
-        how += (how.empty() ? "" : "; ") + target + ": " + used;
+        if (has_dual)
+          {
+            // The dual's error is carried by z minus the reactions' liftings (goal_functionals.h).
+            PETScWrappers::MPI::Vector z = problem.solve_dual(rhs), dual_error(rhs);
+            dual_error = z;
+            dual_error.add(-1.0, liftings);
+            z = dual_error;
+            const Vector<float> dual = kelly_indicators(problem, z);
+            for (unsigned int k = 0; k < indicators.size(); ++k)
+              indicators[k] += primal[k] * dual[k];
+          }
+        how += (how.empty() ? "" : "; ") + target + ": " + used + (has_dual ? ", one dual" : "");
       }
     return flags_from(problem, indicators, cell_fraction);
   }

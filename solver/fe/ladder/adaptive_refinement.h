@@ -6,11 +6,12 @@
 // Goal-oriented (dual-weighted) indicators where the target quantities have a dual: the error of
 // a goal J is a(e, e*) with e* the dual's error, bounded cell by cell by ||e||_K ||e*||_K
 // (Prudhomme and Oden), so a cell's indicator is Kelly's for the primal solution times Kelly's
-// for the dual solution z (K z = j, one more solve with the primal's operator and solver). Each
-// target weighs in relative to its value; a derived target through its sensitivities to the
-// quantities it is made of (finite differences of its expression). Reactions, moments,
-// stiffnesses and the energy are energy-like (their dual is the solution itself: M theta = 2 U
-// for a driven rotation): Kelly's indicator squared over the energy, the same as Kelly alone.
+// for the dual solution z (K z = j, one more solve with the primal's operator and solver). One
+// dual per target, relative to its value: a derived target's parts combined by its linearization
+// (finite differences of its expression), signed, so that errors that cancel in the target cancel
+// in its dual. Reactions, moments and stiffnesses have duals through their boundary's lifting
+// (quantities/goal_functionals.h); the strain energy is energy-like: Kelly's indicator squared
+// over the energy.
 #pragma once
 
 #include "elasticity/linear_elastic_problem.h"

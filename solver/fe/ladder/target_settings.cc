@@ -52,9 +52,10 @@ namespace compliant
     prm.declare_entry("Refinement indicator", "goal", Patterns::Selection("goal|kelly"),
                       "Adaptive refinement: goal: dual-weighted (goal-oriented) indicators, Kelly's "
                       "for the solution times Kelly's for the dual of each target quantity (one more "
-                      "solve per point displacement, stress at a point or mean displacement; "
-                      "reactions, moments, stiffnesses and the energy use the solution itself); "
-                      "kelly: Kelly's gradient-jump indicator of the solution alone.");
+                      "solve per target: point displacements, stresses at points, mean displacements, "
+                      "reactions, moments and stiffnesses, and derived targets made of them, their "
+                      "parts combined by the target's linearization; the strain energy uses the "
+                      "solution itself); kelly: Kelly's gradient-jump indicator of the solution alone.");
     prm.declare_entry("Paired model", "", Patterns::Anything(),
                       "Rung (b) across dimensions: the case file of the same part in the other "
                       "dimension, 'case.prm[: Section/Entry=expression, ...]' (next to this case; "

@@ -5,6 +5,7 @@
 
 #include "quantities/named_points.h"
 #include "quantities/point_location.h"
+#include "quantities/reaction_weights.h"
 
 #include <array>
 #include <cmath>
@@ -135,15 +136,62 @@ namespace compliant
         }
       return Utilities::MPI::max(r, problem.communicator);
     }
+
+    // j_i = a(phi_i, psi_h) for a reaction q(v) = sum_i psi_i r_i(v) = a(v, psi_h) on the dual's
+    // space; psi_h is psi made conforming across hanging nodes, kept as the lifting.
+    template <int dim>
+    void assemble_reaction_functional(const LinearElasticProblem<dim> &problem, PETScWrappers::MPI::Vector &psi,
+                                      const AffineConstraints<double> &homogeneous, PETScWrappers::MPI::Vector &j)
+    {
+      problem.hanging_node_constraints.distribute(psi);
+      PETScWrappers::MPI::Vector psi_h(problem.locally_owned_dofs, problem.locally_relevant_dofs, problem.communicator);
+      psi_h = psi;
+      const auto   &fe = *problem.fe;
+      FEValues<dim> fe_values(*problem.mapping, fe, *problem.quadrature, update_gradients | update_JxW_values);
+      const FEValuesExtractors::Vector     u(0);
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      std::vector<Tensor<2, dim>>          grad(fe_values.n_quadrature_points);
+      Vector<double>                       cell_j(fe.n_dofs_per_cell());
+      j.reinit(problem.locally_owned_dofs, problem.communicator);
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[u].get_function_gradients(psi_h, grad);
+            double nonzero = 0;
+            for (const auto &g : grad)
+              nonzero += g.norm();
+            if (nonzero == 0)
+              continue; // psi lives on the boundary's layer of cells only
+            const Material &material = problem.materials.at(cell->material_id());
+            cell_j                   = 0;
+            for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+              {
+                double     sigma_zz;
+                const auto sigma = problem.cauchy_stress(grad[q], material, 0, sigma_zz);
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  cell_j(i) += (sigma * fe_values[u].symmetric_gradient(i, q)) * fe_values.JxW(q) * problem.thickness;
+              }
+            cell->get_dof_indices(dofs);
+            homogeneous.distribute_local_to_global(cell_j, dofs, j);
+          }
+      j.compress(VectorOperation::add);
+    }
   } // namespace
 
   template <int dim>
   bool assemble_goal_functional(const LinearElasticProblem<dim> &problem, const std::string &name,
                                 const Quantities &values, const AffineConstraints<double> &homogeneous,
-                                PETScWrappers::MPI::Vector &j, double radius)
+                                PETScWrappers::MPI::Vector &j, PETScWrappers::MPI::Vector &lifting, double radius)
   {
     if (problem.mixed)
       return false;
+    lifting.clear();
+    if (reaction_weights(problem, name, lifting))
+      {
+        assemble_reaction_functional(problem, lifting, homogeneous, j);
+        return true;
+      }
     const auto integrand = integrand_of(problem, name, values);
     if (!integrand)
       return false;
@@ -241,7 +289,9 @@ namespace compliant
   }
 
   template bool assemble_goal_functional<2>(const LinearElasticProblem<2> &, const std::string &, const Quantities &,
-                                            const AffineConstraints<double> &, PETScWrappers::MPI::Vector &, double);
+                                            const AffineConstraints<double> &, PETScWrappers::MPI::Vector &,
+                                            PETScWrappers::MPI::Vector &, double);
   template bool assemble_goal_functional<3>(const LinearElasticProblem<3> &, const std::string &, const Quantities &,
-                                            const AffineConstraints<double> &, PETScWrappers::MPI::Vector &, double);
+                                            const AffineConstraints<double> &, PETScWrappers::MPI::Vector &,
+                                            PETScWrappers::MPI::Vector &, double);
 } // namespace compliant

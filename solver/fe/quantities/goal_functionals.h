@@ -17,13 +17,17 @@
 namespace compliant
 {
   // j for quantity `name`, assembled through `homogeneous` (the dual's constraints); false if the
-  // quantity is not a linear functional this function knows (reactions, moments, stiffnesses and
-  // the energy are energy-like: their dual is the solution itself, see goal_refinement.h).
-  // Known: displacement_<point>_<axis>, stress_<point>_<component>[_raw], von_mises_<point>[_raw]
-  // (linearized about `values`), mean_displacement_<boundary>_<axis>. radius: of the bump; 0 for
-  // half the diameter of the coarse (level 0) cell around the point, the same on every rung.
+  // quantity is not a linear functional this function knows (the strain energy is energy-like:
+  // its dual is the solution itself, see ladder/adaptive_refinement.h). Known:
+  // displacement_<point>_<axis>, stress_<point>_<component>[_raw], von_mises_<point>[_raw]
+  // (linearized about `values`), mean_displacement_<boundary>_<axis>, and the reactions of
+  // quantities/reaction_weights.h. For a reaction q(v) = a(v, psi) the dual z solves
+  // a(v, z) = a(v, psi) and z - psi (minus the harmonic extension of psi) carries the dual's
+  // error: `lifting` gets psi then, and stays empty otherwise. radius: of the bump; 0 for half the
+  // diameter of the coarse (level 0) cell around the point, the same on every rung.
   template <int dim>
   bool assemble_goal_functional(const LinearElasticProblem<dim> &problem, const std::string &name,
                                 const Quantities &values, const dealii::AffineConstraints<double> &homogeneous,
-                                dealii::PETScWrappers::MPI::Vector &j, double radius = 0);
+                                dealii::PETScWrappers::MPI::Vector &j, dealii::PETScWrappers::MPI::Vector &lifting,
+                                double radius = 0);
 } // namespace compliant

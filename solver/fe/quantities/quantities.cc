@@ -1,4 +1,5 @@
 #include "quantities/quantities.h"
+#include "quantities/reaction_weights.h"
 
 #include "quantities/named_points.h"
 #include "quantities/peak_sampling.h"
@@ -466,6 +467,51 @@ namespace compliant
     return q;
   }
 
+  // The reaction quantities as sums of the residual at their boundary's DoFs,
+  // name = scale (f . F + m . M) with F = sum r_i e_c(i), M = sum (x_i - x0) x r_i e_c(i):
+  // psi_i = scale (f + m x (x_i - x0))_c(i).
+  template <int dim>
+  bool reaction_weights(const LinearElasticProblem<dim> &problem, const std::string &name,
+                        PETScWrappers::MPI::Vector &psi)
+  {
+    const auto &bc = problem.boundary_conditions;
+    for (const auto &[boundary, id, x0] : reaction_boundaries(problem))
+      {
+        Tensor<1, 3> f, m;
+        double       scale = 1;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            if (d < dim && name == "reaction_force_" + boundary + "_" + axis_name[d])
+              f[d] = 1;
+            if ((dim == 3 || d == 2) && name == "reaction_moment_" + boundary + "_" + axis_name[d])
+              m[d] = 1;
+          }
+        for (const auto &r : bc.rotations)
+          if (r.boundary == boundary && name == "rotational_stiffness_" + boundary)
+            m = r.axis, scale = 1 / (problem.load_factor * r.angle);
+        for (const auto &d : bc.displacements)
+          for (unsigned int c = 0; c < dim; ++c)
+            if (d.boundary == boundary && name == "stiffness_" + boundary + "_" + axis_name[c] && d.is_constant &&
+                d.mask[c] && d.values[c] != 0)
+              f[c] = 1, scale = 1 / (problem.load_factor * d.values[c]);
+        if (f.norm() == 0 && m.norm() == 0)
+          continue;
+        psi.reinit(problem.locally_owned_dofs, problem.communicator);
+        const IndexSet boundary_dofs = boundary_displacement_dofs(problem, id);
+        for (const auto &[dof, location] : owned_dof_locations(problem))
+          if (boundary_dofs.is_element(dof))
+            {
+              Tensor<1, 3> r;
+              for (unsigned int d = 0; d < dim; ++d)
+                r[d] = location.reference[d] - x0[d];
+              psi[dof] = scale * (f + cross_product_3d(m, r))[location.component];
+            }
+        psi.compress(VectorOperation::insert);
+        return true;
+      }
+    return false;
+  }
+
   template void validate_quantity_requests(const LinearElasticProblem<2> &);
   template void validate_quantity_requests(const LinearElasticProblem<3> &);
   template Quantities compute_quantities(const LinearElasticProblem<2> &);
@@ -474,4 +520,6 @@ namespace compliant
   template void validate_quantity_requests(const FiniteStrainProblem<3> &);
   template Quantities compute_quantities(const FiniteStrainProblem<2> &);
   template Quantities compute_quantities(const FiniteStrainProblem<3> &);
+  template bool reaction_weights(const LinearElasticProblem<2> &, const std::string &, PETScWrappers::MPI::Vector &);
+  template bool reaction_weights(const LinearElasticProblem<3> &, const std::string &, PETScWrappers::MPI::Vector &);
 } // namespace compliant
