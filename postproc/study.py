@@ -15,7 +15,9 @@ Each point is written to <out>/points/ as it finishes; a failed point is recorde
 goes on (exit code 3 at the end); running the same command again resumes: finished points are read
 back, failed and missing ones are run. --jobs N runs N points at once; --point K runs one point (a
 scheduler job array: sbatch --array=0-<n-1> ... study.py ... --point $SLURM_ARRAY_TASK_ID, then one
-plain run collects the table).
+plain run collects the table). The points run in batches of up to --batch (default 50) in one solver
+process each (`compliant --points`: the libraries, MPI and PETSc start once per batch, not per point);
+--batch 1 runs every point as its own process.
 """
 import argparse
 import concurrent.futures
@@ -27,6 +29,8 @@ import os
 import subprocess
 import sys
 import tempfile
+import threading
+import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -62,6 +66,60 @@ def run_case(case, sets=(), np=2, output_dir=None, quiet=True):
     if own_dir:
         subprocess.run(["rm", "-rf", output_dir])
     return summary
+
+
+def run_points(case, point_sets, np=2, on_point=None):
+    """Runs several points of one case in one solver process (--points: the libraries start once).
+    Returns per point ("ok", summary), ("failed", message) or None when the process ended before
+    reaching it (then run it alone: run_case gives its own message). on_point(k, result) is called
+    as each point ends, while the others run."""
+    work = tempfile.mkdtemp(prefix="compliant-points-")
+    try:
+        points_file = os.path.join(work, "points.txt")
+        with open(points_file, "w") as f:
+            for k, sets in enumerate(point_sets):
+                sets = list(sets)
+                if not any(s.startswith("Output/Fields") for s in sets):
+                    sets.append("Output/Fields=false")
+                f.write("\t".join([os.path.join(work, "p%d" % k)] + sets) + "\n")
+        results = [None] * len(point_sets)
+        status, seen = os.path.join(work, "points.txt.status"), 0
+
+        def collect():
+            nonlocal seen
+            if not os.path.exists(status):
+                return
+            with open(status) as f:
+                lines = f.read().split("\n")[:-1]  # complete lines only
+            for line in lines[seen:]:
+                fields = line.split("\t")
+                k = int(fields[0])
+                if fields[1] == "ok":
+                    with open(os.path.join(work, "p%d" % k, "summary.json")) as f:
+                        results[k] = ("ok", json.load(f))
+                    subprocess.run(["rm", "-rf", os.path.join(work, "p%d" % k)])
+                else:
+                    results[k] = ("failed", "error: " + (fields[2] if len(fields) > 2 else "failed"))
+                if on_point:
+                    on_point(k, results[k])
+            seen = len(lines)
+
+        with open(os.path.join(work, "stderr"), "w") as err:
+            proc = subprocess.Popen(["mpirun", "-np", str(np), solver_path(), case, "--points", points_file],
+                                    stdout=subprocess.DEVNULL, stderr=err, env=mpi_env())
+            while proc.poll() is None:
+                collect()
+                time.sleep(0.05)
+        collect()
+        if proc.returncode not in (0, 3) and all(r is None for r in results):
+            # the batch itself was refused (the case file, an option): every point would be too
+            message = open(os.path.join(work, "stderr")).read().strip()[-2000:] or "exit %d" % proc.returncode
+            results = [("failed", message)] * len(point_sets)
+            for k in range(len(point_sets)) if on_point else []:
+                on_point(k, results[k])
+        return results
+    finally:
+        subprocess.run(["rm", "-rf", work])
 
 
 def run_case_with_curve(case, sets=(), np=2):
@@ -119,6 +177,8 @@ def main():
                          "most expensive run (then the error is an estimate and the chart says so)")
     ap.add_argument("--target", type=float, default=None, help="percent, drawn on --accuracy charts")
     ap.add_argument("--jobs", type=int, default=1, help="points run at once (each uses --np ranks)")
+    ap.add_argument("--batch", type=int, default=50,
+                    help="points per solver process (they start the libraries once); 1: a process per point")
     ap.add_argument("--point", type=int, default=None,
                     help="run only point K (0-based, in the order of the table), e.g. a Slurm job array "
                          "task: --point $SLURM_ARRAY_TASK_ID; a later run without --point collects them")
@@ -144,26 +204,51 @@ def main():
     def point_sets(combo):
         return args.set + ["%s=%s" % (n, v) for n, v in zip(names, combo)]
 
-    def run_point(index):
-        combo = combos[index]
-        sets = point_sets(combo)
-        key = hashlib.sha1(json.dumps([os.path.abspath(args.case), sets]).encode()).hexdigest()[:16]
-        done, failed = os.path.join(points_dir, key + ".json"), os.path.join(points_dir, key + ".failed.json")
+    def point_files(index):
+        key = hashlib.sha1(json.dumps([os.path.abspath(args.case), point_sets(combos[index])]).encode()).hexdigest()[:16]
+        return os.path.join(points_dir, key + ".json"), os.path.join(points_dir, key + ".failed.json")
+
+    def finished(index):
+        done, _ = point_files(index)
         if os.path.exists(done):
             with open(done) as f:
                 return dict(json.load(f), resumed=True)
-        try:
-            record = {"sets": sets, "status": "ok", "summary": run_case(args.case, sets, args.np)}
-            target = done
-        except RuntimeError as e:
-            record = {"sets": sets, "status": "failed", "message": str(e)}
-            target = failed
+        return None
+
+    def save(index, record):
+        done, failed = point_files(index)
+        target = done if record["status"] == "ok" else failed
         with open(target + ".partial", "w") as f:
             json.dump(record, f)
         os.replace(target + ".partial", target)
         if record["status"] == "ok" and os.path.exists(failed):
             os.remove(failed)
         return record
+
+    def run_point(index):
+        record = finished(index)
+        if record is not None:
+            return record
+        sets = point_sets(combos[index])
+        try:
+            record = {"sets": sets, "status": "ok", "summary": run_case(args.case, sets, args.np)}
+        except RuntimeError as e:
+            record = {"sets": sets, "status": "failed", "message": str(e)}
+        return save(index, record)
+
+    def run_batch(indices, report):
+        """Points in one solver process, each saved and reported as it ends; those the process did
+        not reach run alone."""
+        def on_point(k, result):
+            i, sets = indices[k], point_sets(combos[indices[k]])
+            if result[0] == "ok":
+                report(i, save(i, {"sets": sets, "status": "ok", "summary": result[1]}))
+            else:
+                report(i, save(i, {"sets": sets, "status": "failed", "message": result[1]}))
+        results = run_points(args.case, [point_sets(combos[i]) for i in indices], args.np, on_point)
+        for i, result in zip(indices, results):
+            if result is None:
+                report(i, run_point(i))
 
     def reason(message):
         """The solver's own message (its 'error:' line), not mpirun's closing banner."""
@@ -208,16 +293,36 @@ def main():
         os.replace(table + ".partial", table)
         return rows
 
-    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        futures = {pool.submit(run_point, i): i for i in range(len(combos))}
-        for future in concurrent.futures.as_completed(futures):
-            i = futures[future]
-            records[i] = future.result()
-            status = records[i]["status"] + (" (resumed)" if records[i].get("resumed") else "")
-            if records[i]["status"] != "ok":
-                status += ": " + reason(records[i]["message"])[:200]
-            print(label(combos[i]), status, flush=True)
+    def report(i, record):
+        records[i] = record
+        status = record["status"] + (" (resumed)" if record.get("resumed") else "")
+        if record["status"] != "ok":
+            status += ": " + reason(record["message"])[:200]
+        print(label(combos[i]), status, flush=True)
+
+    for i in range(len(combos)):
+        if finished(i) is not None:
+            report(i, finished(i))
+    pending = [i for i in range(len(combos)) if records[i] is None]
+    write_table()
+    # Batches: every job gets its share, at most --batch points per solver process.
+    jobs = max(1, args.jobs)
+    size = max(1, min(args.batch, -(-len(pending) // jobs)))
+    batches = [pending[k:k + size] for k in range(0, len(pending), size)]
+    lock = threading.Lock()
+
+    def report_and_write(i, record):
+        with lock:
+            report(i, record)
             write_table()
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        if size == 1:
+            futures = [pool.submit(lambda i: report_and_write(i, run_point(i)), b[0]) for b in batches]
+        else:
+            futures = [pool.submit(run_batch, b, report_and_write) for b in batches]
+        for future in concurrent.futures.as_completed(futures):
+            future.result()
     rows = [r for r in write_table() if r["status"] == "ok"]
     print("table:", table)
     failures = [label(c) for c, r in zip(combos, records) if r["status"] != "ok"]
