@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 105 inputs.
-README_CENSUS = {"refused with exit 2": 95, "tool errors with exit 1": 6, "must work": 3, "rank failing alone": 1}
+# The README's census of the corpus: 113 inputs.
+README_CENSUS = {"refused with exit 2": 102, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -56,24 +56,82 @@ def record(name, ok, detail):
         failed.append(name)
 
 
-def solver_case(name, args, words, code=2, np=2, timeout=120):
-    """The solver on a case with --set overrides; fails with `code` and a message holding `words`."""
+def tree_resident_bytes(root_pid):
+    """The resident memory of a process and all its descendants (ranks, gmsh's child), summed."""
+    parents = {}
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open("/proc/%s/stat" % entry) as f:
+                    parents[int(entry)] = int(f.read().rsplit(")", 1)[1].split()[1])
+            except (OSError, IndexError, ValueError):
+                pass
+    tree, grew = {root_pid}, True
+    while grew:
+        more = {pid for pid, parent in parents.items() if parent in tree} - tree
+        tree |= more
+        grew = bool(more)
+    total = 0
+    for pid in tree:
+        try:
+            with open("/proc/%d/statm" % pid) as f:
+                total += int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+        except (OSError, IndexError, ValueError):
+            pass
+    return total
+
+
+def run_sampled(cmd, timeout):
+    """Runs cmd, sampling the resident memory of its process tree every 20 ms (GNU time's %M misses
+    ranks that mpirun does not reap when it aborts the job). Returns (returncode, stdout, stderr,
+    peak bytes), or None on a time-out."""
+    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    result = {}
+    reader = threading.Thread(target=lambda: result.update(zip(("out", "err"), p.communicate())))
+    reader.start()
+    start, peak = time.time(), 0
+    while reader.is_alive():
+        peak = max(peak, tree_resident_bytes(p.pid))
+        reader.join(0.02)
+        if time.time() - start > timeout:
+            p.kill()
+            reader.join()
+            return None
+    return p.returncode, result["out"], result["err"], peak
+
+
+def solver_case(name, args, words, code=2, np=2, timeout=120, bounds=None):
+    """The solver on a case with --set overrides; fails with `code` and a message holding `words`.
+    bounds = (seconds, GB): the run must also end within the seconds, its processes (ranks, gmsh's
+    child) together resident below the GB, sampled every 20 ms."""
     given = [a.split("=", 1)[1] for a in args if a.startswith("Output/Directory=")]
     out = given[0] if given else os.path.join(scratch, "out-" + str(len(outcomes.get("passed", [])) + len(failed)))
     cmd = ["mpirun", "-np", str(np), solver] + args + ([] if given else ["--set", "Output/Directory=" + out])
     census[KIND[code]] = census.get(KIND[code], 0) + 1
     start = time.time()
-    try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, env=env)
-    except subprocess.TimeoutExpired:
-        record(name, False, "hung (no exit within %d s)" % timeout)
-        return
-    text = p.stdout + p.stderr
+    if bounds:
+        sampled = run_sampled(cmd, timeout)
+        if sampled is None:
+            record(name, False, "hung (no exit within %d s)" % timeout)
+            return
+        returncode, stdout, stderr, peak = sampled
+    else:
+        try:
+            p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, env=env)
+        except subprocess.TimeoutExpired:
+            record(name, False, "hung (no exit within %d s)" % timeout)
+            return
+        returncode, stdout, stderr = p.returncode, p.stdout, p.stderr
+    seconds = time.time() - start
+    text = stdout + stderr
     missing = [w for w in words if w.lower() not in text.lower()]
     dumped = [d for d in DUMP_SIGNS if d in text]
     left = os.path.exists(out) and code != 0
-    ok = p.returncode == code and not missing and not dumped and not left
-    detail = "exit %d (want %d) in %.1f s" % (p.returncode, code, time.time() - start)
+    ok = returncode == code and not missing and not dumped and not left
+    detail = "exit %d (want %d) in %.1f s" % (returncode, code, seconds)
+    if bounds:
+        ok = ok and seconds < bounds[0] and peak < bounds[1] * 1e9
+        detail += ", peak %.2f GB (bounds %g s, %g GB)" % (peak / 1e9, bounds[0], bounds[1])
     if missing:
         detail += ", message lacks %s" % missing
     if dumped:
@@ -81,7 +139,7 @@ def solver_case(name, args, words, code=2, np=2, timeout=120):
     if left:
         detail += ", output directory left behind"
     if not ok:
-        detail += "\n      " + "\n      ".join(p.stderr.strip().splitlines()[-6:])
+        detail += "\n      " + "\n      ".join(stderr.strip().splitlines()[-6:])
     record(name, ok, detail)
 
 
@@ -258,6 +316,43 @@ bowtie = scratch_file("bowtie.geo", "Point(1) = {0, 0, 0, 0.2}; Point(2) = {4, 4
 solver_case("meshing: self-intersecting outline",
             [scratch_file("bowtie.prm", "set Model = plane stress\nset Analysis = modal\nsubsection Geometry\n"
                           "  set Mesh file = " + bowtie + "\nend\n"), "--check"], ["bowtie.geo", "gmsh could not mesh"])
+
+# --- meshing that crashes, hangs or asks for too many cells (issue 33) --------------------------
+# gmsh runs in a child process under a memory cap and a time limit, and the cell count is estimated
+# from the curve meshes before the surfaces are meshed: each of these ends with exit 2 on every rank
+# and one message naming the .geo and its parameters, within 10 s, no process above 2 GB.
+bounds = (10, 2)
+solver_case("meshing: flexure 1e-9 thick (gmsh crashes)", [hinge, S, "Geometry/Parameters/t=1e-9"],
+            ["flexure_hinge_2d.geo", "t=1e-09", "gmsh crashed"], bounds=bounds)
+solver_case("meshing: flexure 1e-6 thick (1e8 cells)", [hinge, S, "Geometry/Parameters/t=1e-6"],
+            ["flexure_hinge_2d.geo", "t=1e-06", "cells", "Maximum cells"], bounds=bounds)
+solver_case("meshing: flexure 1e-6 thick on 1 rank", [hinge, S, "Geometry/Parameters/t=1e-6"],
+            ["flexure_hinge_2d.geo", "t=1e-06", "cells", "Maximum cells"], np=1, bounds=bounds)
+solver_case("meshing: more cells than Geometry/Maximum cells", [hinge, S, "Geometry/Maximum cells=100"],
+            ["flexure_hinge_2d.geo", "t=1", "more than the 100 allowed", "Maximum cells"], bounds=bounds)
+solver_case("meshing: Geometry/Maximum cells raised lets the hinge through",
+            [hinge, S, "Geometry/Maximum cells=100000000", "--check"], ["is valid", "140 cells, 1314 DoFs"], code=0)
+# A .geo whose parameter sends gmsh's parser into a loop of 1e12 passes (a hang), and one whose
+# parser list outgrows the memory cap of reading (1 GB): the child is stopped, the run refused.
+square = ("Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {1, 1, 0, 0.5};\n"
+          "Point(4) = {0, 1, 0, 0.5}; Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+          "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+          "Physical Curve(\"left\") = {4}; Physical Surface(\"body\") = {1};\n")
+hang_geo = scratch_file("hang.geo", "DefineConstant[ h = {0, Name \"Parameters/h\"} ];\n" + square +
+                        "If (h > 0)\n  For i In {1:1e12}\n    x = i;\n  EndFor\nEndIf\n")
+hang_case = scratch_file("hang.prm", "set Model = plane stress\nset Analysis = modal\nsubsection Geometry\n"
+                         "  set Mesh file = " + hang_geo + "\nend\n")
+solver_case("meshing: gmsh hangs", [hang_case, S, "Geometry/Parameters/h=1", S, "Geometry/Meshing time limit=3",
+                                    "--check"], ["hang.geo", "h=1", "did not finish within 3 s"], bounds=bounds)
+forever_geo = scratch_file("forever.geo", square + "For i In {1:1e12}\n  x = i;\nEndFor\n")
+solver_case("meshing: gmsh hangs reading the geometry",
+            [hang_case, S, "Geometry/Mesh file=" + forever_geo, S, "Geometry/Meshing time limit=3", "--check"],
+            ["forever.geo", "did not finish within 3 s"], bounds=bounds)
+memory_geo = scratch_file("memory.geo", "DefineConstant[ m = {0, Name \"Parameters/m\"} ];\n" + square +
+                          "If (m > 0)\n  a[] = {1:m};\nEndIf\n")
+solver_case("meshing: gmsh outgrows its memory cap",
+            [hang_case, S, "Geometry/Mesh file=" + memory_geo, S, "Geometry/Parameters/m=3e8", "--check"],
+            ["memory.geo", "m=3e+08", "memory cap"], bounds=bounds)
 
 # --- names, meshes, supports -------------------------------------------------------------------
 solver_case("missing mesh file", [hinge, S, "Geometry/Mesh file=nothing.geo"], ["nothing.geo"])

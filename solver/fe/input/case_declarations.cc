@@ -68,6 +68,18 @@ namespace compliant
                           "modes, the one at the smallest x, then y, then z, takes the amplitude's sign). "
                           "A path that would meet a bifurcation then follows the buckled branch. Empty: "
                           "the perfect geometry.");
+        prm.declare_entry("Maximum cells", "0", Patterns::Integer(0),
+                          "The most cells the gmsh mesh of a .geo file may have. Before meshing, gmsh "
+                          "meshes the curves and the cell count is estimated from them (exactly for "
+                          "transfinite blocks); a larger mesh is refused with the geometry parameters "
+                          "that asked for it (a length in the wrong unit asks for millions of times "
+                          "more cells). 0: automatic, what the memory available holds at about 1 kB "
+                          "per cell on each rank.");
+        prm.declare_entry("Meshing time limit", "0", Patterns::Double(0),
+                          "Seconds gmsh may take to read and mesh the geometry (it runs in a child "
+                          "process, which is stopped at the limit and the run refused). 0: automatic, "
+                          "60 s to read the geometry and mesh its curves, then 60 s + 100 us per "
+                          "estimated cell.");
         declare_geometry_parameters(prm, geometry_parameters);
       }
       prm.leave_subsection();

@@ -241,6 +241,14 @@ namespace compliant
           apply_override(first_pass, o, true);
         first_pass.enter_subsection("Geometry");
         const std::string mesh_name = first_pass.get("Mesh file");
+        double            seconds   = 0; // the time limit of reading the .geo, where declared
+        try
+          {
+            seconds = first_pass.get_double("Meshing time limit");
+          }
+        catch (...)
+          {
+          }
         first_pass.leave_subsection();
         refuse_unreadable_mesh_name(mesh_name, file);
         parsed.mesh_file = resolve_mesh_file(mesh_name, file);
@@ -249,7 +257,7 @@ namespace compliant
                            "': Geometry/Mesh file is empty; expected a .geo or .msh file");
         try
           {
-            geometry_parameters = read_geometry_parameters(parsed.mesh_file);
+            geometry_parameters = read_geometry_parameters(parsed.mesh_file, seconds);
           }
         catch (const std::exception &e)
           {
@@ -291,6 +299,8 @@ namespace compliant
       {
         throw InputError("case file '" + p.case_file + "', Geometry/Imperfection: " + e.what());
       }
+    p.maximum_cells      = static_cast<std::uint64_t>(prm.get_integer("Maximum cells"));
+    p.meshing_time_limit = prm.get_double("Meshing time limit");
     prm.leave_subsection();
     if (!p.imperfection.empty() && p.analysis != "nonlinear static")
       throw InputError("case file '" + p.case_file + "', Geometry/Imperfection: an imperfection shapes the "

@@ -11,6 +11,7 @@
 #include "mesh/partition_request.h"
 
 #include <functional>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -51,6 +52,8 @@ namespace compliant
     std::string                   mesh_file; // resolved path
     std::map<std::string, double> geometry_parameters;
     std::vector<ImperfectionMode> imperfection; // Geometry/Imperfection (nonlinear static)
+    std::uint64_t maximum_cells      = 0; // Geometry/Maximum cells; 0: automatic
+    double        meshing_time_limit = 0; // Geometry/Meshing time limit in s; 0: automatic
 
     unsigned int element_degree     = 2;
     unsigned int global_refinements = 0;

@@ -42,7 +42,11 @@ namespace compliant
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
       try
         {
-          geometry = mesh_geometry(p.mesh_file, p.geometry_parameters);
+          MeshingLimits limits;
+          limits.maximum_cells = p.maximum_cells;
+          limits.ranks         = dealii::Utilities::MPI::n_mpi_processes(comm);
+          limits.seconds       = p.meshing_time_limit;
+          geometry             = mesh_geometry(p.mesh_file, p.geometry_parameters, limits);
           if (!p.curved_boundaries)
             geometry.curved = {};
           report_curved_boundaries(geometry.curved);

@@ -1,26 +1,28 @@
 #include "mesh/memory_estimate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 namespace compliant
 {
-  namespace
+  double available_memory()
   {
-    // MemAvailable of /proc/meminfo in bytes, or 0.
-    double available_memory()
-    {
-      std::ifstream meminfo("/proc/meminfo");
-      std::string   key;
-      double        kilobytes;
-      std::string   unit;
-      while (meminfo >> key >> kilobytes >> unit)
-        if (key == "MemAvailable:")
-          return kilobytes * 1024;
-      return 0;
-    }
-  } // namespace
+    std::ifstream meminfo("/proc/meminfo");
+    std::string   key;
+    double        kilobytes;
+    std::string   unit;
+    while (meminfo >> key >> kilobytes >> unit)
+      if (key == "MemAvailable:")
+        return kilobytes * 1024;
+    return 0;
+  }
+
+  std::uint64_t automatic_maximum_cells(const unsigned int ranks)
+  {
+    return static_cast<std::uint64_t>(available_memory() / (1000.0 * std::max(1u, ranks)));
+  }
 
   void refuse_refinement_beyond_memory(const std::uint64_t coarse_cells, const unsigned int dim,
                                        const unsigned int global_refinements, const unsigned int degree,

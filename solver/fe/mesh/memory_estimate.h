@@ -17,6 +17,13 @@ namespace compliant
     using std::invalid_argument::invalid_argument;
   };
 
+  // MemAvailable of /proc/meminfo in bytes, or 0 where it cannot be read.
+  double available_memory();
+
+  // The cells a mesh may have when every one of `ranks` ranks holds it whole, at ~1 kB per cell
+  // per rank: MemAvailable / (1 kB x ranks); 0 where the available memory cannot be read.
+  std::uint64_t automatic_maximum_cells(unsigned int ranks);
+
   // Throws ModelTooLarge naming the refinement, the estimate and the memory available; does
   // nothing where the available memory cannot be read.
   void refuse_refinement_beyond_memory(std::uint64_t coarse_cells, unsigned int dim,
