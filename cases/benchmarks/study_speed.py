@@ -6,8 +6,9 @@
   batched          --np 2: up to 50 points per process (`compliant --points`)
   batched, 2 jobs  --np 1 --jobs 2: two single-rank processes at once, each with its batches
 
-Prints points per second of each and checks that their tables agree (every quantity to 1e-9 relative,
-times and memory aside); writes study_speed.md beside this script.
+Prints points per second of each and the largest relative difference of any quantity from the
+point-by-point table (1 rank against 2 differs at the iterative solver's tolerance); writes
+study_speed.md beside this script.
 
     /usr/bin/python3 cases/benchmarks/study_speed.py [--points 200]
 """
@@ -34,16 +35,31 @@ def run(points, extra, out):
 
 
 def largest_difference(a, b):
-    worst = 0.0
+    """Largest relative difference of any quantity and its name; a component is compared at the
+    scale of its largest sibling (reaction_force_base_y ~ 1e-11 beside _x ~ 1e-2 is round-off);
+    times, memory, the rank count and the diff: columns (differences of the quantities) aside."""
+    worst, where = 0.0, ""
     for ra, rb in zip(a, b):
         for key in ra:
-            if key.startswith(("time_", "memory_")) or ra[key] == rb.get(key):
+            if key.startswith(("time_", "memory_", "solver_", "diff:")) or key == "n_ranks" or ra[key] == rb.get(key):
                 continue
             try:
-                worst = max(worst, abs(float(ra[key]) - float(rb[key])) / max(abs(float(ra[key])), abs(float(rb[key]))))
+                stem = key.rsplit("_", 1)[0]
+                scale = max(abs(float(v)) for k, v in ra.items() if k.rsplit("_", 1)[0] == stem and _number(v))
+                d = abs(float(ra[key]) - float(rb[key])) / max(scale, 1e-300)
             except (TypeError, ValueError):
-                return float("inf")
-    return worst
+                d = float("inf")
+            if d > worst:
+                worst, where = d, key
+    return worst, where
+
+
+def _number(v):
+    try:
+        float(v)
+        return True
+    except (TypeError, ValueError):
+        return False
 
 
 def main():
@@ -70,10 +86,11 @@ def main():
     for name, code, seconds, rows, ok in results:
         lines.append("| %s | %d | %.1f | %.2f | %.1f |" % (name, ok, seconds, ok / seconds, results[0][2] / seconds))
     for name, code, seconds, rows, ok in results[1:]:
-        worst = largest_difference(results[0][3], rows)
+        worst, where = largest_difference(results[0][3], rows)
         lines.append("")
-        lines.append("%s against point by point: largest relative difference of any quantity %.1e." % (name, worst))
-        print("%s: largest relative difference %.1e" % (name, worst))
+        lines.append("%s against point by point: largest relative difference of any quantity %.1e (%s; a "
+                     "component at the scale of its siblings)." % (name, worst, where))
+        print("%s: largest relative difference %.1e (%s)" % (name, worst, where))
     open(os.path.join(HERE, "study_speed.md"), "w").write("\n".join(lines) + "\n")
     subprocess.run(["rm", "-rf", work])
 
