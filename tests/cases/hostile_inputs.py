@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 113 inputs.
-README_CENSUS = {"refused with exit 2": 102, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
+# The README's census of the corpus: 115 inputs.
+README_CENSUS = {"refused with exit 2": 104, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -330,6 +330,13 @@ solver_case("meshing: flexure 1e-6 thick on 1 rank", [hinge, S, "Geometry/Parame
             ["flexure_hinge_2d.geo", "t=1e-06", "cells", "Maximum cells"], np=1, bounds=bounds)
 solver_case("meshing: more cells than Geometry/Maximum cells", [hinge, S, "Geometry/Maximum cells=100"],
             ["flexure_hinge_2d.geo", "t=1", "more than the 100 allowed", "Maximum cells"], bounds=bounds)
+# A study's points file (compliant --points, postproc/study.py's batches): unreadable, or a line
+# whose override has no '='.
+solver_case("points file missing", [hinge, "--points", os.path.join(scratch, "no_such_points.txt")],
+            ["--points", "cannot read", "no_such_points.txt"])
+solver_case("points file with an override without '='",
+            [hinge, "--points", scratch_file("points.txt", os.path.join(scratch, "p0") + "\tGeometry/Parameters/t\n")],
+            ["--points", "points.txt", "line 1", "Geometry/Parameters/t"])
 solver_case("meshing: Geometry/Maximum cells raised lets the hinge through",
             [hinge, S, "Geometry/Maximum cells=100000000", "--check"], ["is valid", "140 cells, 1314 DoFs"], code=0)
 # A .geo whose parameter sends gmsh's parser into a loop of 1e12 passes (a hang), and one whose

@@ -147,7 +147,15 @@ int main(int argc, char **argv)
       const CommandLine command_line = parse_command_line(argc, argv);
       if (points_file.empty())
         return run_case(command_line, comm, root);
-      const auto points = read_batch_points(points_file);
+      std::vector<BatchPoint> points;
+      try
+        {
+          points = read_batch_points(points_file);
+        }
+      catch (const std::runtime_error &e)
+        {
+          throw InputError(e.what()); // bad input: exit 2
+        }
       const auto run_point = [&](const BatchPoint &point) {
         CommandLine at_point = command_line;
         at_point.overrides.insert(at_point.overrides.end(), point.overrides.begin(), point.overrides.end());
