@@ -229,7 +229,10 @@ namespace compliant
         prm.declare_entry("Mean displacements", "", Patterns::Anything(),
                           "Boundaries whose average displacement is reported: 'right, top'.");
         prm.declare_entry("Rotations", "", Patterns::Anything(),
-                          "Boundaries whose best-fit rigid rotation is reported: 'right'.");
+                          "Boundaries whose best-fit rigid rotation is reported: 'right'. Gives "
+                          "rotation_<b>_<x|y|z> (radians; 2D: _z), the rotation of the rigid motion "
+                          "t + w x x closest to u over the boundary in the least-squares sense "
+                          "(integrated over its area, independent of where the mesh puts nodes).");
         prm.declare_entry("Stress points", "", Patterns::Anything(),
                           "Named points for stress output: 'hole: 10 0; root: L/2 H/2'. Gives "
                           "stress_<name>_<xx|yy|zz|xy[|xz|yz]> (Cauchy, from the stress field "

@@ -1,6 +1,7 @@
 #include "ladder/adaptive_refinement.h"
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/numerics/error_estimator.h>
 
@@ -10,6 +11,8 @@
 #include "quantities/goal_functionals.h"
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <map>
 #include <set>
 
@@ -126,6 +129,7 @@ namespace compliant
         PETScWrappers::MPI::Vector rhs(problem.locally_owned_dofs, problem.communicator);
         PETScWrappers::MPI::Vector liftings(problem.locally_owned_dofs, problem.communicator);
         bool                       has_dual = false;
+        double                     dual_seconds = 0;
         for (const auto &[q, c] : linearization(target, values, derived, problem.expression_variables()))
           {
             PETScWrappers::MPI::Vector j, lifting;
@@ -151,7 +155,9 @@ namespace compliant
         if (has_dual)
           {
             // The dual's error is carried by z minus the reactions' liftings (goal_functionals.h).
+            Timer                      dual_timer;
             PETScWrappers::MPI::Vector z = problem.solve_dual(rhs), dual_error(rhs);
+            dual_seconds                 = dual_timer.wall_time();
             dual_error = z;
             dual_error.add(-1.0, liftings);
             z = dual_error;
@@ -159,7 +165,11 @@ namespace compliant
             for (unsigned int k = 0; k < indicators.size(); ++k)
               indicators[k] += primal[k] * dual[k];
           }
-        how += (how.empty() ? "" : "; ") + target + ": " + used + (has_dual ? ", one dual" : "");
+        std::ostringstream cost;
+        if (has_dual)
+          cost << ", one dual (solved in " << std::setprecision(2) << dual_seconds << " s, the primal in "
+               << problem.statistics.solve_seconds << " s)";
+        how += (how.empty() ? "" : "; ") + target + ": " + used + cost.str();
       }
     return flags_from(problem, indicators, cell_fraction);
   }

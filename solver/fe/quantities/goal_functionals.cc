@@ -21,13 +21,16 @@ namespace compliant
 
     // What a goal functional integrates: sum_c weight[c] v_c (a displacement) or
     // sum_ij weights[i][j] sigma_ij(v) (a stress, sigma_zz of 2D models included), under the bump
-    // around `centre`, or over boundary `boundary_id` when that is set.
+    // around `centre`, or over boundary `boundary_id` when that is set: averaged over it, or with
+    // `rigid_fit`, sum_c (g . R_c(x)) v_c integrated (a best-fit rotation, reaction_weights.h).
     struct Integrand
     {
       Tensor<1, 3>          displacement_weights;
       SymmetricTensor<2, 3> stress_weights;
       Point<3>              centre;
       int                   boundary_id = -1;
+      bool                  rigid_fit   = false;
+      std::array<double, 6> g{};
     };
 
     bool strip_prefix(std::string &text, const std::string &prefix)
@@ -62,6 +65,11 @@ namespace compliant
     {
       const auto &p = problem.parameters;
       Integrand   integrand;
+      if (rotation_weights(problem, name, integrand.g, integrand.boundary_id))
+        {
+          integrand.rigid_fit = true;
+          return integrand;
+        }
       std::string rest = name;
       for (unsigned int c = 0; c < dim; ++c)
         {
@@ -236,6 +244,12 @@ namespace compliant
             {
               const unsigned int c     = fe.system_to_component_index(i).first;
               double             value = c < dim ? integrand->displacement_weights[c] * v.shape_value(i, q) : 0;
+              if (c < dim && integrand->rigid_fit)
+                {
+                  const auto row = rigid_motion_row(v.quadrature_point(q), c);
+                  for (unsigned int m = 0; m < 6; ++m)
+                    value += integrand->g[m] * row[m] * v.shape_value(i, q);
+                }
               if (c < dim && integrand->stress_weights.norm() > 0)
                 {
                   Tensor<2, dim> grad;
@@ -280,6 +294,8 @@ namespace compliant
     };
     visit(false);
     total = Utilities::MPI::sum(total, problem.communicator);
+    if (integrand->rigid_fit && total > 0)
+      total = 1; // an integral, not a mean
     if (!(total > 0))
       return false; // no quadrature point under the bump: the caller falls back
     j.reinit(problem.locally_owned_dofs, problem.communicator);

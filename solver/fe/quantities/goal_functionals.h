@@ -20,7 +20,8 @@ namespace compliant
   // quantity is not a linear functional this function knows (the strain energy is energy-like:
   // its dual is the solution itself, see ladder/adaptive_refinement.h). Known:
   // displacement_<point>_<axis>, stress_<point>_<component>[_raw], von_mises_<point>[_raw]
-  // (linearized about `values`), mean_displacement_<boundary>_<axis>, and the reactions of
+  // (linearized about `values`), mean_displacement_<boundary>_<axis>, rotation_<boundary>_<axis>
+  // (Quantities/Rotations), and the reactions of
   // quantities/reaction_weights.h. For a reaction q(v) = a(v, psi) the dual z solves
   // a(v, z) = a(v, psi) and z - psi (minus the harmonic extension of psi) carries the dual's
   // error: `lifting` gets psi then, and stays empty otherwise. radius: of the bump; 0 for half the

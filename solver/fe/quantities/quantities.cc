@@ -13,6 +13,8 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <array>
+
 #include "finite_strain/finite_strain_problem.h"
 #include "elasticity/linear_elastic_problem.h"
 #include "input/expression.h"
@@ -293,55 +295,69 @@ namespace compliant
         }
     }
 
-    // Best-fit rigid motion u ~ t + w x (x - c) of a boundary's DoFs, least squares.
+    // Best-fit rigid motion u ~ t + w x x of a boundary in the least-squares sense over its area,
+    // (t, w) = N^-1 int R^T u dA with N = int R^T R dA (R: rigid_motion_row), so that the value
+    // does not depend on where the mesh puts its nodes. N^-1 on every rank.
     template <class Problem, int dim = Problem::dimension>
-    void add_boundary_rotations(const Problem           &problem,
-                                const DofLocations<dim> &locations,
-                                Quantities              &q)
+    FullMatrix<double> rigid_fit_inverse(const Problem &problem, const int id)
     {
-      MPI_Comm comm = problem.communicator;
+      FullMatrix<double>   normal(6, 6);
+      FEFaceValues<dim>    face_values(*problem.mapping, *problem.fe, *problem.face_quadrature,
+                                       update_quadrature_points | update_JxW_values);
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && (int)cell->face(f)->boundary_id() == id)
+              {
+                face_values.reinit(cell, f);
+                for (unsigned int k = 0; k < face_values.n_quadrature_points; ++k)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    {
+                      const auto row = rigid_motion_row(face_values.quadrature_point(k), c);
+                      for (unsigned int i = 0; i < 6; ++i)
+                        for (unsigned int j = 0; j < 6; ++j)
+                          normal(i, j) += row[i] * row[j] * face_values.JxW(k);
+                    }
+              }
+      // One sum per entry, in this order on every rank.
+      for (unsigned int i = 0; i < 6; ++i)
+        for (unsigned int j = 0; j < 6; ++j)
+          normal(i, j) = Utilities::MPI::sum(normal(i, j), problem.communicator);
+      if (dim == 2) // t_z, w_x, w_y do not exist in plane models
+        for (unsigned int i : {2u, 3u, 4u})
+          normal(i, i) = 1;
+      normal.gauss_jordan();
+      return normal;
+    }
+
+    template <class Problem, int dim = Problem::dimension>
+    void add_boundary_rotations(const Problem &problem, Quantities &q)
+    {
+      FEFaceValues<dim> face_values(*problem.mapping, *problem.fe, *problem.face_quadrature,
+                                    update_values | update_quadrature_points | update_JxW_values);
+      std::vector<Tensor<1, dim>> u(face_values.n_quadrature_points);
       for (const auto &name : names_in(problem.parameters.rotations))
         {
-          const int      id            = problem.geometry.boundary_ids.at(name);
-          const IndexSet boundary_dofs = boundary_displacement_dofs(problem, id);
-          // Unknowns: t (3) and w (3); in 2D only t_x, t_y, w_z matter.
-          FullMatrix<double> normal(6, 6);
-          Vector<double>     rhs(6);
-          for (const auto &[dof, location] : locations)
-            if (boundary_dofs.is_element(dof))
-              {
-                double       row[6] = {0, 0, 0, 0, 0, 0};
-                const auto   c      = location.component;
-                Tensor<1, 3> x;
-                for (unsigned int d = 0; d < dim; ++d)
-                  x[d] = location.reference[d];
-                row[c] = 1;
-                for (unsigned int j = 0; j < 3; ++j)
+          const int      id = problem.geometry.boundary_ids.at(name);
+          Vector<double> rhs(6), tw(6);
+          for (const auto &cell : problem.dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const auto f : cell->face_indices())
+                if (cell->face(f)->at_boundary() && (int)cell->face(f)->boundary_id() == id)
                   {
-                    Tensor<1, 3> e;
-                    e[j]       = 1;
-                    row[3 + j] = cross_product_3d(e, x)[c];
+                    face_values.reinit(cell, f);
+                    face_values[FEValuesExtractors::Vector(0)].get_function_values(problem.solution, u);
+                    for (unsigned int k = 0; k < u.size(); ++k)
+                      for (unsigned int c = 0; c < dim; ++c)
+                        {
+                          const auto row = rigid_motion_row(face_values.quadrature_point(k), c);
+                          for (unsigned int i = 0; i < 6; ++i)
+                            rhs(i) += row[i] * u[k][c] * face_values.JxW(k);
+                        }
                   }
-                for (unsigned int i = 0; i < 6; ++i)
-                  {
-                    rhs(i) += row[i] * problem.solution[dof];
-                    for (unsigned int j = 0; j < 6; ++j)
-                      normal(i, j) += row[i] * row[j];
-                  }
-              }
-          // One sum per entry, in this order on every rank.
           for (unsigned int i = 0; i < 6; ++i)
-            {
-              rhs(i) = Utilities::MPI::sum(rhs(i), comm);
-              for (unsigned int j = 0; j < 6; ++j)
-                normal(i, j) = Utilities::MPI::sum(normal(i, j), comm);
-            }
-          if (dim == 2) // t_z, w_x, w_y do not exist in plane models
-            for (unsigned int i : {2u, 3u, 4u})
-              normal(i, i) = 1;
-          Vector<double> tw(6);
-          normal.gauss_jordan();
-          normal.vmult(tw, rhs);
+            rhs(i) = Utilities::MPI::sum(rhs(i), problem.communicator);
+          rigid_fit_inverse(problem, id).vmult(tw, rhs);
           if (dim == 2)
             q["rotation_" + name + "_z"] = tw(5);
           else
@@ -453,13 +469,12 @@ namespace compliant
     add_mesh_sizes(problem, q);
     add_point_displacements(problem, q);
 
-    // The DoF locations serve both the reactions and the boundary rotations.
     const auto residual  = problem.reaction_forces();
     const auto locations = owned_dof_locations(problem);
     const auto moments   = add_reactions(problem, residual, locations, q);
     add_stiffnesses(problem, moments, q);
     add_mean_displacements(problem, q);
-    add_boundary_rotations(problem, locations, q);
+    add_boundary_rotations(problem, q);
     add_rigid_motions(problem, q);
     add_peak_stress_and_energy(problem, q);
     add_region_maxima(problem, q);
@@ -512,6 +527,23 @@ namespace compliant
     return false;
   }
 
+  template <int dim>
+  bool rotation_weights(const LinearElasticProblem<dim> &problem, const std::string &name,
+                        std::array<double, 6> &g, int &boundary_id)
+  {
+    for (const auto &boundary : names_in(problem.parameters.rotations))
+      for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+        if (name == "rotation_" + boundary + "_" + axis_name[d])
+          {
+            boundary_id         = problem.geometry.boundary_ids.at(boundary);
+            const auto inverse = rigid_fit_inverse(problem, boundary_id);
+            for (unsigned int m = 0; m < 6; ++m)
+              g[m] = inverse(3 + d, m);
+            return true;
+          }
+    return false;
+  }
+
   template void validate_quantity_requests(const LinearElasticProblem<2> &);
   template void validate_quantity_requests(const LinearElasticProblem<3> &);
   template Quantities compute_quantities(const LinearElasticProblem<2> &);
@@ -522,4 +554,6 @@ namespace compliant
   template Quantities compute_quantities(const FiniteStrainProblem<3> &);
   template bool reaction_weights(const LinearElasticProblem<2> &, const std::string &, PETScWrappers::MPI::Vector &);
   template bool reaction_weights(const LinearElasticProblem<3> &, const std::string &, PETScWrappers::MPI::Vector &);
+  template bool rotation_weights(const LinearElasticProblem<2> &, const std::string &, std::array<double, 6> &, int &);
+  template bool rotation_weights(const LinearElasticProblem<3> &, const std::string &, std::array<double, 6> &, int &);
 } // namespace compliant
