@@ -35,13 +35,14 @@ import csv
 import json
 import math
 import os
-import platform
 import re
 import shutil
 import subprocess
 import sys
 import tempfile
 import time
+
+from report_header import provenance
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -341,15 +342,10 @@ def main():
              "below it." % (reference, 100 * (reference - closed) / closed, closed, 100 * ours[-1]["error_closed_form"]))
     reading.append(text)
 
-    machine = ("Machine: %s, %d cores (%s), %s; load average %.1f before and %.1f after the run (other jobs "
-               "shared the machine: absolute times drift 30-50 %% between runs, the ratios of one run hold). "
-               "Ours on %d MPI ranks; CalculiX 2.20 (Debian calculix-ccx, SPOOLES, ARPACK) with OMP_NUM_THREADS = "
-               "CCX_NPROC_EQUATION_SOLVER = %d. The whole benchmark took %.1f min." % (
-                   platform.node(), os.cpu_count(), platform.processor() or platform.machine(), platform.platform(),
+    machine = ("Load average %.1f before and %.1f after the run. Ours on %d MPI ranks; CalculiX (SPOOLES, "
+               "ARPACK) with OMP_NUM_THREADS = CCX_NPROC_EQUATION_SOLVER = %d. The whole benchmark took %.1f min." % (
                    load_before[0], load_after[0], args.ranks, args.ranks, total_minutes))
-    head = ["# Buckling: cost against CalculiX *BUCKLE on the same mesh (issue 27)", "",
-            "`/usr/bin/python3 cases/benchmarks/buckling_speed.py --m %s --reference-m %s --elements %s --ranks %d`" % (
-                args.m, args.reference_m, args.elements, args.ranks), "",
+    head = ["# Buckling: cost against CalculiX *BUCKLE on the same mesh (issue 27)", ""] + provenance() + [
             "Fixed-free 3D column of `cases/benchmarks/buckling_column.prm` (L = 200, H = 10, W = 5, E = 200000, "
             "nu = 0.3, end force 1, so the factors are critical forces; the case of "
             "`cases/verification/euler_column_3d.prm`), first 5 buckling factors (weak axis 1, strong axis 1, "

@@ -12,7 +12,7 @@ mid-point deflection) with its relative difference from the MUMPS run on the sam
   /usr/bin/python3 cases/benchmarks/finite_strain_speed.py [--meshes 40x8x2,60x12x3,80x16x3]
       [--methods direct,matrix-free]
 
-Writes cases/benchmarks/finite_strain_speed.{csv,md}."""
+Writes cases/benchmarks/finite_strain_speed.{csv,md,png}."""
 import argparse
 import csv
 import json
@@ -21,6 +21,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+from report_header import fit_slope, provenance
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -83,9 +85,8 @@ def main():
         writer.writeheader()
         writer.writerows(rows)
     lines = ["# Finite-strain Newton steps: MUMPS against the matrix-free p-multigrid",
-             "",
-             "`/usr/bin/python3 cases/benchmarks/finite_strain_speed.py` (case "
-             "`cases/benchmarks/flexure_finite_strain.prm`, %d ranks). Time per Newton step = "
+             ""] + provenance() + [
+             "Case `cases/benchmarks/flexure_finite_strain.prm`, %d ranks. Time per Newton step = "
              "(tangent or residual assembly + linear solve) / Newton iterations; the difference is "
              "relative to the MUMPS run on the same mesh." % args.ranks,
              "",
@@ -107,9 +108,32 @@ def main():
                          "%.1f times faster; whole process %.1f against %.1f s" %
                          (mesh, d["dofs"], d["per_step"], m["per_step"], d["per_step"] / m["per_step"],
                           d["wall"], m["wall"]))
+    lines += ["", "Time per Newton step against DoFs (least-squares slope over the meshes):", ""]
+    for method in dict.fromkeys(r["method"] for r in rows):
+        points = [(r["dofs"], r["per_step"]) for r in rows if r["method"] == method]
+        lines.append("- %s: slope %.2f over %d meshes" % (method, fit_slope(points), len(points)))
+    lines += ["", "![time per Newton step](%s.png)" % os.path.basename(args.output)]
     with open(args.output + ".md", "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
+    chart(rows, args.output + ".png", args.ranks)
+
+
+def chart(rows, path, ranks):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for method in dict.fromkeys(r["method"] for r in rows):
+        rs = sorted((r for r in rows if r["method"] == method), key=lambda r: r["dofs"])
+        ax.loglog([r["dofs"] for r in rs], [r["per_step"] for r in rs], "o-", label=method)
+    ax.set_xlabel("DoFs")
+    ax.set_ylabel("time per Newton step (s), %d ranks" % ranks)
+    ax.set_title("flexure_finite_strain.prm: neo-Hookean strip turned 45 degrees")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
 
 
 if __name__ == "__main__":

@@ -16,6 +16,8 @@ import subprocess
 import tempfile
 import time
 
+from report_header import provenance
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 SOLVER = os.environ.get("COMPLIANT_SOLVER", os.path.join(ROOT, "build", "solver", "fe", "compliant"))
@@ -67,7 +69,7 @@ def main():
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
         writer.writeheader()
         writer.writerows(rows)
-    lines = ["Q2 cantilever n = %d (%d DoFs), matrix-free p-multigrid; peak resident memory (VmHWM) per "
+    lines = ["# Memory per rank", ""] + provenance() + ["Q2 cantilever n = %d (%d DoFs), matrix-free p-multigrid; peak resident memory (VmHWM) per "
              "rank. Ranks beyond 2 are oversubscribed on this 2-core machine: times there are not "
              "speeds." % (args.n, rows[0]["dofs"]), "",
              "The fixed footprint of one process (libraries, MPI, PETSc; measured on an n = 1 "
