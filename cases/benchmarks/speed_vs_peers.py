@@ -9,7 +9,7 @@ The reference tip deflection is extrapolated from our three finest Q2 meshes (Ri
 observed order); every code's error is against it.
 
   scripts/setup.sh peers        # once: installs calculix-ccx and python3-dolfinx, builds
-  /usr/bin/python3 cases/benchmarks/speed_vs_peers.py [--problem cantilever|leaf|hinge] [--n ...] [--methods auto,cg-amg,direct]
+  /usr/bin/python3 cases/benchmarks/speed_vs_peers.py [--problem cantilever|leaf|hinge|flexure-finite-strain] [--n ...] [--methods auto,cg-amg,direct]
 
 Writes cases/benchmarks/<problem>_speed.{csv,md,png}. --problem leaf: the thin leaf in torsion of
 cases/benchmarks/leaf_torsion.prm (strain energy as QoI). --problem hinge: the 3D blade flexure hinge of
@@ -56,6 +56,15 @@ PROBLEMS["hinge"] = dict(case="hinge_3d.prm", mesh=lambda m: {}, mesh_file=hinge
                          qoi=lambda q: q["strain_energy"], fenicsx="fenicsx_hinge.py", fenicsx_qoi=lambda v: v,
                          calculix_qoi=lambda v: v, dofs=hinge_mesh.q2_dofs, label="strain energy",
                          title="3D blade flexure hinge, level m (blade cells 4:1:5)")
+# Finite strain (issue 30, item 2): the neo-Hookean strip turned 45 degrees of flexure_finite_strain.prm
+# on 20n x 4n x n cells; FEniCSx with the same law, quadrature and load factors; CalculiX not yet.
+PROBLEMS["flexure-finite-strain"] = dict(
+    case="flexure_finite_strain.prm", mesh=lambda n: {"nx": 20 * n, "ny": 4 * n, "nz": n},
+    qoi=lambda q: q["reaction_moment_right_y"], fenicsx="fenicsx_flexure_finite_strain.py",
+    fenicsx_qoi=lambda v: v, fenicsx_args=["direct"], fenicsx_variant="mumps", peers=["fenicsx"],
+    solve_key="time_linear_solves",
+    iterations_key="newton_iterations", dofs=lambda n: 3 * (40 * n + 1) * (8 * n + 1) * (2 * n + 1),
+    label="end moment M_y", title="TPU strip turned 45 degrees (neo-Hookean, 6 load steps), 20n x 4n x n hexahedra")
 PROBLEM = PROBLEMS["cantilever"]
 
 
@@ -80,13 +89,15 @@ def run_ours(n, method, ranks):
     shutil.rmtree(work, ignore_errors=True)
     q = summary["quantities"]
     return {"dofs": q["n_dofs"], "qoi": PROBLEM["qoi"](q), "wall_s": wall,
-            "solve_s": q["time_solve"], "iterations": q["solver_iterations"],
+            "solve_s": q[PROBLEM.get("solve_key", "time_solve")],
+            "iterations": q[PROBLEM.get("iterations_key", "solver_iterations")],
             "memory_mb": q.get("memory_peak_max_rank_mb", float("nan")),
-            "method": summary["settings"]["solver"]}
+            "method": summary["settings"].get("solver", method)}
 
 
 def run_fenicsx(n, ranks):
-    cmd = ["mpirun", "-np", str(ranks), "/usr/bin/python3", os.path.join(HERE, "peers", PROBLEM["fenicsx"]), str(n)]
+    cmd = ["mpirun", "-np", str(ranks), "/usr/bin/python3", os.path.join(HERE, "peers", PROBLEM["fenicsx"]), str(n)] + \
+        PROBLEM.get("fenicsx_args", [])
     start = time.perf_counter()
     proc = subprocess.run(cmd, capture_output=True, text=True, env=ENV)
     wall = time.perf_counter() - start
@@ -135,10 +146,11 @@ def main():
     args = parser.parse_args()
     global PROBLEM, PROBLEM_NAME
     PROBLEM, PROBLEM_NAME = PROBLEMS[args.problem], args.problem
-    args.n = args.n or {"cantilever": "2,4,6,8,12,16", "leaf": "1,2,3,4,6", "hinge": "2,3,4,6,8,10"}[args.problem]
+    args.n = args.n or {"cantilever": "2,4,6,8,12,16", "leaf": "1,2,3,4,6", "hinge": "2,3,4,6,8,10",
+                        "flexure-finite-strain": "1,2,3,4,5"}[args.problem]
     ladder = [int(v) for v in args.n.split(",")]
     methods = [m for m in args.methods.split(",") if m]
-    peers = [p for p in args.peers.split(",") if p]
+    peers = [p for p in args.peers.split(",") if p and p in PROBLEM.get("peers", ["fenicsx", "calculix"])]
     if args.problem == "cantilever" and "calculix" in peers and any(n % 2 for n in ladder):
         sys.exit("speed_vs_peers.py: --n %s: the cantilever's tip (the end face's centre) is a node of "
                  "CalculiX's 20-node mesh for even n only" % args.n)
@@ -158,7 +170,7 @@ def main():
         if n <= args.peer_max_n:
             for peer in peers:
                 r = run_fenicsx(n, args.ranks) if peer == "fenicsx" else run_calculix(n)
-                r.update(code=peer, variant="gamg" if peer == "fenicsx" else "spooles", n=n)
+                r.update(code=peer, variant=PROBLEM.get("fenicsx_variant", "gamg") if peer == "fenicsx" else "spooles", n=n)
                 rows.append(r)
                 print(json.dumps(r), flush=True)
     done = [r for r in rows if "skipped" not in r]
