@@ -34,7 +34,7 @@ class InputError(Exception):
     pass
 
 
-def read_test(path, mode):
+def read_test(path, mode, max_strain=np.inf):
     """(strain, stress) arrays of one test file."""
     strain, stress = [], []
     try:
@@ -56,10 +56,11 @@ def read_test(path, mode):
             raise InputError(f"{path}:{number}: expected 'strain, stress' numbers, got '{line.strip()}'")
         if not (np.isfinite(e) and np.isfinite(s)) or e <= -1:
             raise InputError(f"{path}:{number}: strain must be > -1 and both finite, got '{line.strip()}'")
-        strain.append(e)
-        stress.append(s)
+        if e <= max_strain:
+            strain.append(e)
+            stress.append(s)
     if len(strain) < 3:
-        raise InputError(f"{path}: needs at least 3 data points, has {len(strain)}")
+        raise InputError(f"{path}: needs at least 3 data points (up to --max-strain), has {len(strain)}")
     return np.array(strain), np.array(stress)
 
 
@@ -118,13 +119,14 @@ def fit_law(name, data):
         (lambda nonneg: linear_fit(law, data, nonneg))
     constants = fit(False)
     unstable = modes.drucker_violation(law, constants)
-    note = "stable"
+    note, stable = "stable", True
     if unstable:
         constants = fit(True)
         again = modes.drucker_violation(law, constants)
+        stable = not again
         note = f"unconstrained fit unstable ({unstable}); refit with constants >= 0: " + \
-            ("stable" if not again else f"still unstable ({again})")
-    return law, constants, note
+            ("stable" if stable else f"still unstable ({again})")
+    return law, constants, note, stable
 
 
 def errors(law, constants, data):
@@ -144,7 +146,7 @@ def write_entry(path, results, args, to_pa, to_mpa):
     with open(path, "w") as f:
         f.write(f"# fit_material entry for '{args.name}' from {', '.join(args.sources)}\n")
         f.write("# library.dat line (SI; E = 2 G (1 + nu) of the chosen law's small-strain G):\n")
-        best = min((r for r in results if r["drucker"] == "stable"), key=lambda r: r["errors"]["rms"])
+        best = min((r for r in results if r["stable"]), key=lambda r: r["errors"]["rms"])
         E = 2 * best["G"] * to_pa * (1 + args.nu)
         f.write(f"{args.name:<21} {E:.6g}  {args.nu:g}  {args.density:g}  {args.yield_strength:g}  "
                 f"{args.source or 'fit_material'}; {best['name']} fit (E from its G)\n\n")
@@ -182,6 +184,8 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     for mode in modes.MODES:
         parser.add_argument(f"--{mode}", help=f"{mode} test CSV (strain, nominal stress)")
+    parser.add_argument("--max-strain", type=float, default=np.inf,
+                        help="fit only points up to this nominal strain (all tests); default: all")
     parser.add_argument("--stress-unit", default="MPa", choices=("MPa", "Pa"))
     parser.add_argument("--nu", type=float, default=0.48,
                         help="Poisson's ratio for the entry (the solver's bulk modulus); default 0.48")
@@ -202,7 +206,7 @@ def main(argv=None):
         for n in names:
             if n not in LAWS:
                 raise InputError(f"--laws: unknown law '{n}'; expected some of {', '.join(LAWS)}")
-        data = {mode: read_test(getattr(args, mode), mode) for mode in modes.MODES if getattr(args, mode)}
+        data = {mode: read_test(getattr(args, mode), mode, args.max_strain) for mode in modes.MODES if getattr(args, mode)}
     except InputError as e:
         print(f"fit_material: {e}", file=sys.stderr)
         return 2
@@ -211,9 +215,9 @@ def main(argv=None):
     to_mpa = to_pa * 1e-6
     results = []
     for name in names:
-        law, constants, note = fit_law(name, data)
+        law, constants, note, stable = fit_law(name, data)
         G = modes.shear_modulus(law, constants)
-        results.append({"name": name, "law": law, "constants": constants, "drucker": note,
+        results.append({"name": name, "law": law, "constants": constants, "drucker": note, "stable": stable,
                         "errors": errors(law, constants, data), "G": G, "E": 2 * G * (1 + args.nu),
                         "E_incompressible": 3 * G, "nu": args.nu})
     print(f"{'law':<14} {'rms':>10} {'max':>10} {'rms/peak':>9} {'G':>10} {'E':>10} {'nu':>5}  "

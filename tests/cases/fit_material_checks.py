@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks of postproc/fit_material.py.
 
-    fit_material_checks.py recovery | bad_input
+    fit_material_checks.py recovery | bad_input | fe_uniaxial
 
 recovery: data generated from known laws (the closed forms of hyperelastic_modes.py, exact to
 round-off) in uniaxial, planar and equibiaxial tension are fitted again, and every constant comes
@@ -10,6 +10,13 @@ of it (a local minimum of Ogden's exponents, a loose tolerance) fails. The Ogden
 and negative exponents; the generating constants are Drucker-stable (else the tool would refit them
 constrained). Also: the closed forms themselves against an independent computation, the nominal
 stress from central differences of the incompressible energy of the principal stretches.
+fe_uniaxial: every law fitted to the shipped TPU data (postproc/material_data/cheetah_fit/fit.json)
+runs in the solver on one plane-stress element in uniaxial tension (uniaxial_element.prm) to the
+last data strain. Two independent computations: the solver's compressible tensor law (bulk modulus
+1e4 G, so nearly incompressible) and the fit's incompressible closed forms. The FE nominal stress
+equals the closed form at every step to 1e-3 (the compressibility: volume strain ~ P / kappa <=
+1e-4, its effect on P a few times that), and reproduces each data point within the fit's own
+largest error (+ 1e-3 of the point's stress).
 bad_input: unreadable files, malformed lines, too few points, an unknown law exit 2 with the file
 and line named.
 """
@@ -115,6 +122,37 @@ elif mode == "bad_input":
                                  capture_output=True, text=True)
             check(run.returncode == 2 and expected in run.stderr,
                   "%s: exit %d, names '%s' (%s)" % (" ".join(extra[-2:]), run.returncode, expected, run.stderr.strip()))
+elif mode == "fe_uniaxial":
+    from scipy.interpolate import CubicSpline
+    from study import run_case_with_curve  # noqa: E402
+    root = os.path.join(here, "..", "..")
+    fit = json.load(open(os.path.join(root, "postproc", "material_data", "cheetah_fit", "fit.json")))
+    rows = [l.split(",") for l in open(os.path.join(root, "postproc", "material_data",
+                                                    "ninjatek_cheetah_uniaxial.csv")) if l[0].isdigit()]
+    strain = np.array([float(r[0]) for r in rows])
+    stress = np.array([float(r[1]) for r in rows])
+    keep = strain <= 2.0  # the range the shipped fit used (--max-strain 2)
+    strain, stress = strain[keep], stress[keep]
+    for r in fit["laws"]:
+        law, c = r["law"], r["constants"]
+        G = modes.shear_modulus(law, c)
+        text = ", ".join("%s=%.17g" % kv for kv in c.items()) + ", kappa=%.17g" % (1e4 * G)
+        summary, curve = run_case_with_curve(os.path.join(here, "uniaxial_element.prm"),
+                                             ["Finite strain/Law=" + law, "Finite strain/Law constants=" + text,
+                                              "Boundary conditions/Displacement=left: x=0; bottom: y=0; right: x=%.17g"
+                                              % strain.max()], np=1)
+        lf = np.array([0.0] + [float(row["load_factor"]) for row in curve])
+        P = np.array([0.0] + [float(row["reaction_force_right_x"]) for row in curve])
+        e = lf * strain.max()
+        closed = modes.nominal_stress(law, c, "uniaxial", 1 + e[1:])
+        deviation = np.abs(P[1:] - closed).max() / np.abs(closed).max()
+        check(deviation <= 1e-3, "%s: FE nominal stress = closed form to %.2e over %d steps (<= 1e-3)"
+              % (r["name"], deviation, len(curve)))
+        at_data = CubicSpline(e, P)(strain)
+        miss = np.abs(at_data - stress)
+        bound = r["errors"]["max"] + 1e-3 * np.abs(stress)
+        check(bool(np.all(miss <= bound)), "%s: FE reproduces the %d data points within the fit's max error "
+              "%.4g MPa (largest miss %.4g)" % (r["name"], len(strain), r["errors"]["max"], miss.max()))
 else:
-    unknown_mode(mode, ["recovery", "bad_input"])
+    unknown_mode(mode, ["recovery", "bad_input", "fe_uniaxial"])
 finish()
