@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks of postproc/fit_material.py.
 
-    fit_material_checks.py recovery | bad_input | fe_uniaxial
+    fit_material_checks.py recovery | bad_input | fe_uniaxial | solver_bad_constants
 
 recovery: data generated from known laws (the closed forms of hyperelastic_modes.py, exact to
 round-off) in uniaxial, planar and equibiaxial tension are fitted again, and every constant comes
@@ -17,6 +17,8 @@ last data strain. Two independent computations: the solver's compressible tensor
 equals the closed form at every step to 1e-3 (the compressibility: volume strain ~ P / kappa <=
 1e-4, its effect on P a few times that), and reproduces each data point within the fit's own
 largest error (+ 1e-3 of the point's stress).
+solver_bad_constants: the solver refuses bad 'Finite strain/Law constants' before meshing, with exit
+2 and one message naming the entry and what it expected.
 bad_input: unreadable files, malformed lines, too few points, an unknown law exit 2 with the file
 and line named.
 """
@@ -153,6 +155,21 @@ elif mode == "fe_uniaxial":
         bound = r["errors"]["max"] + 1e-3 * np.abs(stress)
         check(bool(np.all(miss <= bound)), "%s: FE reproduces the %d data points within the fit's max error "
               "%.4g MPa (largest miss %.4g)" % (r["name"], len(strain), r["errors"]["max"], miss.max()))
+elif mode == "solver_bad_constants":
+    from study import mpi_env, solver_path  # noqa: E402
+    bad = [("Ogden", "", "needs its constants"), ("Ogden", "mu1=1", "needs 'alpha1'"),
+           ("Yeoh", "C10=1, C20=-2, C30=0.01", "not Drucker-stable"),
+           ("Ogden", "mu1=-1, alpha1=2", "shear modulus must be > 0"),
+           ("neo-Hookean", "C10=1, mu=3", "unexpected 'mu'")]
+    for law, text, expected in bad:
+        run = subprocess.run(["mpirun", "-np", "1", solver_path(), os.path.join(here, "uniaxial_element.prm"),
+                              "--set", "Finite strain/Law=" + law, "--set", "Finite strain/Law constants=" + text,
+                              "--set", "Output/Directory=" + tempfile.mkdtemp()],
+                             capture_output=True, text=True, env=mpi_env())
+        out = run.stdout + run.stderr
+        check(run.returncode == 2 and "Finite strain/Law constants" in out and expected in out,
+              "%s '%s': exit %d, names the entry and '%s' (%s)" % (law, text, run.returncode, expected,
+                                                                  next((l for l in out.splitlines() if "Error" in l), "")))
 else:
-    unknown_mode(mode, ["recovery", "bad_input", "fe_uniaxial"])
+    unknown_mode(mode, ["recovery", "bad_input", "fe_uniaxial", "solver_bad_constants"])
 finish()

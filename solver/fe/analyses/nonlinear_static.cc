@@ -243,7 +243,14 @@ namespace compliant
     s.finite_strain.law                   = prm.get("Law");
     s.finite_strain.mooney_rivlin_ratio   = prm.get_double("Mooney-Rivlin ratio");
     s.finite_strain.law_constants         = prm.get("Law constants");
-    parse_law_constants(s.finite_strain.law, s.finite_strain.law_constants); // bad input stops here
+    try // bad constants are bad input (exit 2), refused before the mesh is made
+      {
+        parse_law_constants(s.finite_strain.law, s.finite_strain.law_constants);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("case file '" + p.case_file + "': " + e.what());
+      }
     s.finite_strain.mixed                 = prm.get("Formulation") == "mixed";
     s.finite_strain.follower_pressure     = prm.get("Follower pressure");
     s.finite_strain.max_newton_iterations = prm.get_integer("Newton iterations");
