@@ -169,7 +169,7 @@ elif mode == "solver_bad_constants":
         out = run.stdout + run.stderr
         check(run.returncode == 2 and "Finite strain/Law constants" in out and expected in out,
               "%s '%s': exit %d, names the entry and '%s' (%s)" % (law, text, run.returncode, expected,
-                                                                  next((l for l in out.splitlines() if "Error" in l), "")))
+                                                                  next((l for l in out.splitlines() if "Law constants" in l), "")))
 else:
     unknown_mode(mode, ["recovery", "bad_input", "fe_uniaxial", "solver_bad_constants"])
 finish()
