@@ -10,7 +10,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$root/build}
 
 packages=(cmake g++ make ccache pkg-config libdeal.ii-dev gmsh libgmsh-dev openmpi-bin libopenmpi-dev
-          python3-matplotlib python3-h5py python3-numpy numdiff googletest libgtest-dev)
+          python3-matplotlib python3-h5py python3-numpy python3-scipy numdiff googletest libgtest-dev)
 # Benchmarks only, never the tests: the same problems in FEniCSx (dolfinx) and CalculiX.
 if [ "$mode" = peers ]; then packages+=(calculix-ccx python3-dolfinx); fi
 missing=()

@@ -35,6 +35,7 @@ namespace compliant
                         hyperelastic_law_documentation());
       prm.declare_entry("Mooney-Rivlin ratio", "0.2", Patterns::Double(0, 0.99),
                         "c2 / (c1 + c2) of the Mooney-Rivlin law (0 is neo-Hookean).");
+      prm.declare_entry("Law constants", "", Patterns::Anything(), law_constants_documentation());
       prm.declare_entry("Formulation", "displacement", Patterns::Selection("displacement|mixed"),
                         "displacement: Q_p elements; mixed: Q_p displacement with discontinuous "
                         "P_(p-1) pressure, free of volumetric locking for nu -> 0.5.");
@@ -241,6 +242,15 @@ namespace compliant
     prm.enter_subsection("Finite strain");
     s.finite_strain.law                   = prm.get("Law");
     s.finite_strain.mooney_rivlin_ratio   = prm.get_double("Mooney-Rivlin ratio");
+    s.finite_strain.law_constants         = prm.get("Law constants");
+    try // bad constants are bad input (exit 2), refused before the mesh is made
+      {
+        parse_law_constants(s.finite_strain.law, s.finite_strain.law_constants);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError("case file '" + p.case_file + "': " + e.what());
+      }
     s.finite_strain.mixed                 = prm.get("Formulation") == "mixed";
     s.finite_strain.follower_pressure     = prm.get("Follower pressure");
     s.finite_strain.max_newton_iterations = prm.get_integer("Newton iterations");

@@ -86,10 +86,10 @@ namespace compliant
 
     this->assign_materials();
     for (const auto &[id, material] : materials)
-      laws.emplace(id, HyperelasticLaw(settings.law, material, settings.mooney_rivlin_ratio));
+      laws.emplace(id, HyperelasticLaw(settings.law, material, settings.mooney_rivlin_ratio, settings.law_constants));
     if (mixed && !laws.begin()->second.supports_mixed())
       throw std::invalid_argument("Finite strain/Formulation: the mixed formulation needs the "
-                                  "neo-Hookean or Mooney-Rivlin law");
+                                  "neo-Hookean, Mooney-Rivlin, Ogden or Yeoh law");
     this->resolve_boundary_conditions();
     if (!boundary_conditions.total_forces.empty())
       throw std::invalid_argument("Loads/Total force: not available in finite strain (the loaded "
@@ -237,7 +237,7 @@ namespace compliant
                                                                   const double    pressure,
                                                                   double         &sigma_zz) const
   {
-    const HyperelasticLaw law(settings.law, material, settings.mooney_rivlin_ratio);
+    const HyperelasticLaw law = law_of(material);
     const Tensor<2, dim>  F = unit_symmetric_tensor<dim>() + grad_u;
     const auto            r = material_response(law, green_lagrange(grad_u), pressure);
     // in plane stress J includes the thickness stretch sqrt(C33)
@@ -256,9 +256,20 @@ namespace compliant
   double FiniteStrainProblem<dim>::energy_density(const Tensor<2, dim> &grad_u,
                                                   const Material       &material, double) const
   {
-    const HyperelasticLaw law(settings.law, material, settings.mooney_rivlin_ratio);
-    return material_response(law, green_lagrange(grad_u), 0.0).energy;
+    return material_response(law_of(material), green_lagrange(grad_u), 0.0).energy;
   }
+
+  template <int dim>
+  HyperelasticLaw FiniteStrainProblem<dim>::law_of(const Material &material) const
+  {
+    // the body's law made at setup (its constants parsed and checked once), else a new one
+    for (const auto &[id, m] : materials)
+      if (m.name == material.name && m.youngs_modulus == material.youngs_modulus &&
+          m.poissons_ratio == material.poissons_ratio && laws.count(id))
+        return laws.at(id);
+    return HyperelasticLaw(settings.law, material, settings.mooney_rivlin_ratio, settings.law_constants);
+  }
+
 
   template <int dim>
   PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::reaction_forces() const

@@ -38,6 +38,7 @@ namespace compliant
   {
     std::string law = "neo-Hookean";
     double      mooney_rivlin_ratio = 0;
+    std::string law_constants; // 'Finite strain/Law constants' (finite_strain/law_constants.h)
     bool        mixed = false;
     std::string follower_pressure; // 'boundary: expression' (reference coordinates x, y, z)
     unsigned    max_newton_iterations = 25;
@@ -154,6 +155,8 @@ namespace compliant
   private:
     friend class FiniteStrainNewtonSystem<dim>;
     friend class FiniteStrainContinuationSystem<dim>;
+    // The law of a body's material (for output): the one made at setup.
+    HyperelasticLaw law_of(const Material &material) const;
     // The law's response at one point: plane stress (2D) or plane strain/3D.
     StressResponse<dim> material_response(const HyperelasticLaw &law,
                                           const dealii::SymmetricTensor<2, dim> &E,

@@ -1,5 +1,7 @@
 #include "finite_strain/hyperelastic_law.h"
 
+#include "finite_strain/hyperelastic_law_tools.h"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -7,6 +9,7 @@
 namespace compliant
 {
   using namespace dealii;
+  using law_tools::inverse_product, law_tools::log_J;
 
   const std::vector<HyperelasticLawEntry> &hyperelastic_laws()
   {
@@ -14,7 +17,11 @@ namespace compliant
       {"neo-Hookean", "W = mu/2 (I1-3) - mu ln J + lambda/2 (ln J)^2"},
       {"neo-Hookean isochoric", "W = mu/2 (J^(-2/3) I1 - 3) + kappa/4 (J^2 - 1 - 2 ln J) (deal.II code gallery)"},
       {"Mooney-Rivlin", "W = c1 (I1-3) + c2 (I2-3) - 2(c1+2c2) ln J + lambda/2 (ln J)^2"},
-      {"Saint Venant-Kirchhoff", "W = lambda/2 (tr E)^2 + mu E:E"}};
+      {"Saint Venant-Kirchhoff", "W = lambda/2 (tr E)^2 + mu E:E"},
+      {"Ogden", "W = sum_p 2 mu_p/alpha_p^2 (tr C^(alpha_p/2) - 3) - (sum_p 2 mu_p/alpha_p) ln J + lambda/2 (ln J)^2, "
+                "1 to 3 terms (constants from Law constants)"},
+      {"Yeoh", "W = C10 (I1-3) + C20 (I1-3)^2 + C30 (I1-3)^3 - 2 C10 ln J + lambda/2 (ln J)^2 (constants from Law "
+               "constants)"}};
     return laws;
   }
 
@@ -28,7 +35,8 @@ namespace compliant
 
   std::string hyperelastic_law_documentation()
   {
-    std::string text = "Hyperelastic law (compressible; small-strain limit has the material's E and nu).";
+    std::string text = "Hyperelastic law (compressible; small-strain limit has the material's E and nu unless "
+                       "Law constants gives the law's own; lambda = kappa - 2 mu/3).";
     for (const auto &law : hyperelastic_laws())
       if (law.formula[0] != '\0')
         text += " " + std::string(law.name) + ": " + law.formula + ".";
@@ -36,9 +44,11 @@ namespace compliant
   }
 
   HyperelasticLaw::HyperelasticLaw(const std::string &kind, const Material &material,
-                                   const double mooney_rivlin_ratio)
+                                   const double mooney_rivlin_ratio, const std::string &constants_text)
     : svk(kind == "Saint Venant-Kirchhoff")
     , isochoric(kind == "neo-Hookean isochoric")
+    , ogden(kind == "Ogden")
+    , yeoh(kind == "Yeoh")
   {
     bool known = false;
     for (const auto &law : hyperelastic_laws())
@@ -46,51 +56,36 @@ namespace compliant
     if (!known)
       throw std::invalid_argument("Finite strain/Law: unknown law '" + kind + "'; expected one of " +
                                   hyperelastic_law_selection());
+    constants           = parse_law_constants(kind, constants_text);
     mu                  = material.shear_modulus();
     lambda_small_strain = material.lame_lambda();
     const double ratio  = kind == "Mooney-Rivlin" ? mooney_rivlin_ratio : 0.0;
     c1                  = (1 - ratio) * mu / 2;
     c2                  = ratio * mu / 2;
+    if (constants.given)
+      {
+        // the law's own shear modulus; the bulk modulus given, or from the material's nu
+        mu = constants.shear_modulus(kind);
+        const double nu = material.poissons_ratio;
+        const double kappa =
+          constants.bulk_modulus > 0 ? constants.bulk_modulus : 2 * mu * (1 + nu) / (3 * (1 - 2 * nu));
+        lambda_small_strain = kappa - 2 * mu / 3;
+        c1 = kind == "neo-Hookean" || kind == "Mooney-Rivlin" ? constants.c[0] : mu / 2;
+        c2 = kind == "Mooney-Rivlin" ? constants.c[1] : 0.0;
+      }
     // the c2 term adds 4 c2 to the small-strain lambda: compensate so E and nu hold at C = I
     lambda_volumetric = lambda_small_strain - 4 * c2;
   }
-
-  namespace
-  {
-    // (C^-1 (x) C^-1) symmetrised: I_ijkl = (Ci_ik Ci_jl + Ci_il Ci_jk) / 2 = -dC^-1/dC
-    template <int dim>
-    SymmetricTensor<4, dim> inverse_product(const SymmetricTensor<2, dim> &Ci)
-    {
-      SymmetricTensor<4, dim> result;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = i; j < dim; ++j)
-          for (unsigned int k = 0; k < dim; ++k)
-            for (unsigned int l = k; l < dim; ++l)
-              result[i][j][k][l] = 0.5 * (Ci[i][k] * Ci[j][l] + Ci[i][l] * Ci[j][k]);
-      return result;
-    }
-  } // namespace
-
-  namespace
-  {
-    // ln J = ln sqrt(det(I + H)) with H = 2E, computed without forming det - 1 by subtraction.
-    template <int dim>
-    double log_J(const SymmetricTensor<2, dim> &E)
-    {
-      const SymmetricTensor<2, dim> H  = 2 * E;
-      const double                  tr = trace(H);
-      double det_minus_one = tr + determinant(H);
-      if (dim == 3)
-        det_minus_one += 0.5 * (tr * tr - H * H);
-      return 0.5 * std::log1p(det_minus_one);
-    }
-  } // namespace
 
   template <int dim>
   StressResponse<dim> HyperelasticLaw::response(const SymmetricTensor<2, dim> &E, const bool mixed,
                                                 const double pressure) const
   {
     StressResponse<dim>           r;
+    if (ogden)
+      return ogden_response(E, mixed, pressure);
+    if (yeoh)
+      return yeoh_response(E, mixed, pressure);
     const SymmetricTensor<2, dim> I   = unit_symmetric_tensor<dim>();
     const double                  trE = trace(E);
     r.log_J                           = log_J(E);

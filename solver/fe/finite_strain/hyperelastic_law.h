@@ -11,10 +11,20 @@
 // Saint Venant-Kirchhoff: W = lambda/2 (tr E)^2 + mu E:E.
 // Neo-Hookean with isochoric split (the deal.II code gallery's compressible Cook's membrane):
 //   W = mu/2 (J^(-2/3) I1 - 3) + kappa/4 (J^2 - 1 - 2 ln J), kappa = lambda + 2 mu/3.
+// Printed elastomers (constants from 'Finite strain/Law constants', law_constants.h), in the same
+// compressible form as the Mooney-Rivlin family (not split; the ln J term makes S = 0 at C = I):
+//   Ogden: W = sum_p 2 mu_p/alpha_p^2 (tr C^(alpha_p/2) - 3) - (sum_p 2 mu_p/alpha_p) ln J + V(J)
+//   Yeoh:  W = sum_i C_i0 (I1 - 3)^i - 2 C10 ln J + V(J)
+// with V = lambda/2 (ln J)^2 (or p ln J - p^2/(2 lambda), mixed). Small strain: shear modulus
+// sum mu_p (Ogden), 2 C10 (Yeoh); lambda = kappa - 2 mu/3 with the bulk modulus kappa given or from
+// the material's nu. Incompressible, they are the laws fit_material fits (Ogden's mu_p, alpha_p as
+// in Ogden 1972 / Abaqus). tr C^(a) comes from the eigenvalues of E, its derivative from the
+// divided differences of the power function (Daleckii-Krein), stable at repeated eigenvalues.
 #pragma once
 
 #include <deal.II/base/symmetric_tensor.h>
 
+#include "finite_strain/law_constants.h"
 #include "materials/material.h"
 
 #include <string>
@@ -50,8 +60,10 @@ namespace compliant
   {
   public:
     // kind: a name of hyperelastic_laws() (else std::invalid_argument); mooney_rivlin_ratio =
-    // c2 / (c1 + c2) in [0, 1).
-    HyperelasticLaw(const std::string &kind, const Material &material, double mooney_rivlin_ratio);
+    // c2 / (c1 + c2) in [0, 1). constants: 'Finite strain/Law constants' (law_constants.h), in the
+    // case's stress unit; empty: from the material's E and nu (not for Ogden and Yeoh).
+    HyperelasticLaw(const std::string &kind, const Material &material, double mooney_rivlin_ratio,
+                    const std::string &constants = "");
 
     // Full response to the Green-Lagrange strain E = (C - I)/2 (E, not C: the stress of small
     // strains is then free of cancellation); with `mixed`, the volumetric part is carried by the
@@ -69,9 +81,19 @@ namespace compliant
     bool   is_saint_venant_kirchhoff() const { return svk; }
     bool   supports_mixed() const { return !svk && !isochoric; }
 
+    double small_strain_shear_modulus() const { return mu; }
+
   private:
-    bool   svk, isochoric;
-    double c1, c2, lambda_volumetric, mu, lambda_small_strain;
+    template <int dim>
+    StressResponse<dim> ogden_response(const dealii::SymmetricTensor<2, dim> &E, bool mixed,
+                                       double pressure) const; // hyperelastic_law_elastomers.cc
+    template <int dim>
+    StressResponse<dim> yeoh_response(const dealii::SymmetricTensor<2, dim> &E, bool mixed,
+                                      double pressure) const; // hyperelastic_law_elastomers.cc
+
+    bool         svk, isochoric, ogden, yeoh;
+    double       c1, c2, lambda_volumetric, mu, lambda_small_strain;
+    LawConstants constants; // Ogden's mu_p, alpha_p or Yeoh's C_i0 (law_constants.h)
   };
   // E = (H + H^T + H^T H) / 2 from the displacement gradient H, without forming C - I.
   template <int dim>
