@@ -34,8 +34,7 @@ runs = [
     ("2D linear static", "flexure_hinge.prm", [], ["picture.svg"]),
     ("3D linear static", "flexure_hinge_3d.prm", ["Geometry/Parameters/nb=1"], ["picture.svg"]),
     ("3D modal", "verification/modal_cantilever_3d.prm",
-     ["Geometry/Parameters/nx=12", "Modal/Number of modes=3", "Output/Fields=false"],
-     ["mode_1.svg", "mode_2.svg", "mode_3.svg"]),
+     ["Geometry/Parameters/nx=12", "Output/Fields=false"], ["mode_%d.svg" % k for k in range(1, 7)]),
     ("2D nonlinear static", "flexure_hinge_large_rotation.prm",
      ["Geometry/Parameters/nt=2", "Finite strain/Maximum step=0.25"], ["picture.svg", "load_displacement.svg"]),
 ]

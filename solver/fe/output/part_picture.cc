@@ -284,8 +284,15 @@ namespace compliant
       if (labels.has_peak && n > 0)
         for (unsigned int d = 0; d < 3; ++d)
           side[d] = labels.peak_position[d] >= centre[d] / n ? 1 : -1;
-      return {view_from({side[0], side[1], 0.8 * side[2]}, "view from the peak's side"),
-              view_from({-side[0], -side[1], -0.8 * side[2]}, "opposite side")};
+      const auto name = [](const Vec &d) {
+        std::string text = "seen from (";
+        for (unsigned int k = 0; k < 3; ++k)
+          text += std::string(k ? " " : "") + (d[k] > 0 ? "+" : "-") + "xyz"[k];
+        return text + ")";
+      };
+      const Vec opposite{-side[0], -side[1], -side[2]};
+      return {view_from({side[0], side[1], 0.8 * side[2]}, name(side) + (labels.has_peak ? ", the peak's side" : "")),
+              view_from({opposite[0], opposite[1], 0.8 * opposite[2]}, name(opposite))};
     }
   } // namespace
 

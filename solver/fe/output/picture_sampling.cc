@@ -101,14 +101,16 @@ namespace compliant
         std::reverse(polygon.begin(), polygon.end());
     }
 
-    // Sub-cells per edge: twice the degree, fewer on large meshes (about 2e4 polygons at most).
+    // Sub-cells per edge: twice the degree in 2D, where the colour bands run through the few
+    // cells of a flexure's thickness; the degree in 3D (the surface is seen from afar); fewer on
+    // large meshes (about 2e4 polygons at most).
     template <int dim>
     unsigned int subdivisions(const Discretization<dim> &discretization)
     {
       const double cells = discretization.triangulation.n_global_active_cells();
       const double faces = dim == 2 ? cells : 6 * std::pow(cells, 2.0 / 3.0);
       const double most  = std::sqrt(2e4 / std::max(faces, 1.0));
-      return std::max(1u, std::min<unsigned int>(2 * discretization.fe->degree, most));
+      return std::max(1u, std::min<unsigned int>((dim == 2 ? 2 : 1) * discretization.fe->degree, most));
     }
   } // namespace
 

@@ -171,7 +171,7 @@ figure{margin:10px 0}figcaption{font-size:13px;color:#444}img{max-width:100%;bor
     out << "<h2>Timings and memory</h2>\n";
     quantity_table(s, true, out);
     out << "<p class=\"meta\">Pictures and this page: " << short_number(picture_seconds, 2)
-        << " s (not in summary.json, which is written before).</p>\n";
+        << " s (not in summary.json).</p>\n";
     out << "<h2>Case file</h2>\n<pre>" << escape_xml(case_text) << "</pre>\n</body></html>\n";
     return out.str();
   }

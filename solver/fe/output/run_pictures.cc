@@ -9,6 +9,7 @@
 #include "elasticity/linear_elastic_problem.h"
 #include "finite_strain/finite_strain_problem.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -107,7 +108,7 @@ namespace compliant
         PictureLabels labels     = common_labels<dim>(discretization, s);
         const std::string id     = std::to_string(m + 1);
         labels.title             = "Mode " + id + ": " + short_number(quantity(s, "frequency_" + id), 6) + " Hz";
-        labels.value_name        = "displacement magnitude (relative)";
+        labels.value_name        = "|u| / largest |u|";
         labels.value_unit        = "";
         labels.mode_amplitude    = 0.1;
         // Relative to the mode's largest displacement: a mode has no amplitude of its own.
