@@ -2,6 +2,8 @@
 #include "output/svg_style.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -94,19 +96,35 @@ namespace compliant
       return f;
     }
 
+    // x with one decimal (pixels): what the picture needs, written without printf (thousands of
+    // points per picture).
+    void append_pixel(const double x, std::string &out)
+    {
+      const long long tenths = std::llround(std::isfinite(x) ? 10 * x : 0.0);
+      char            text[24];
+      auto            end = std::to_chars(text, text + sizeof(text), std::llabs(tenths) / 10).ptr;
+      if (tenths < 0)
+        out += '-';
+      out.append(text, end);
+      out += '.';
+      out += static_cast<char>('0' + std::llabs(tenths) % 10);
+    }
+
     void path_of(const std::vector<PictureCorner> &polygon, const View &v, const Frame &f,
                  const double scale, std::ostream &out)
     {
-      char        text[48];
-      const char *command = "M";
+      std::string text;
+      char        command = 'M';
       for (const auto &c : polygon)
         {
           const Vec p = position(c, scale);
-          std::snprintf(text, sizeof(text), "%s%.1f %.1f", command, f.px(p, v), f.py(p, v));
-          out << text;
-          command = "L";
+          text += command;
+          append_pixel(f.px(p, v), text);
+          text += ' ';
+          append_pixel(f.py(p, v), text);
+          command = 'L';
         }
-      out << "Z";
+      out << text << 'Z';
     }
 
     // Signed area on the screen (> 0: counter-clockwise, facing the viewer) and mean depth.
@@ -169,11 +187,17 @@ namespace compliant
         std::vector<std::pair<double, std::size_t>> order;
         for (std::size_t p = 0; p < g.polygons.size(); ++p)
           {
+            if (!three_d) // flat: any order, nothing hidden
+              {
+                order.emplace_back(0.0, p);
+                continue;
+              }
             const auto [area, depth] = facing_and_depth(g.polygons[p], v, s);
-            if (!three_d || area > 0)
+            if (area > 0)
               order.emplace_back(depth, p);
           }
-        std::sort(order.begin(), order.end());
+        if (three_d)
+          std::sort(order.begin(), order.end());
         return order;
       };
       if (three_d)
@@ -190,6 +214,13 @@ namespace compliant
             path_of({segment[0], segment[1]}, v, f, 0.0, out);
           out << "\"/>\n";
         }
+      std::vector<std::string> flat; // the bands' colours, unshaded
+      for (unsigned int k = 0; k < colour_bands; ++k)
+        {
+          double r, gr, b;
+          band_colour((k + 0.5) / colour_bands, r, gr, b);
+          flat.push_back(hex_colour(r, gr, b));
+        }
       // Fill and hairline stroke in one colour (currentColor) hide the seams between polygons.
       out << "<g fill=\"currentColor\" stroke=\"currentColor\" stroke-width=\"0.4\" stroke-linejoin=\"round\">";
       for (const auto &[depth, p] : visible(scale))
@@ -199,8 +230,11 @@ namespace compliant
           for (const auto &c : polygon)
             value += c.value;
           double r, gr, b;
-          band_colour(range.fraction(value / polygon.size()), r, gr, b);
-          out << "<path color=\"" << hex_colour(r, gr, b, three_d ? shade_of(polygon, v, scale) : 1.0)
+          const double t = range.fraction(value / polygon.size());
+          band_colour(t, r, gr, b);
+          out << "<path color=\""
+              << (three_d ? hex_colour(r, gr, b, shade_of(polygon, v, scale)) :
+                            flat[std::min<unsigned int>(colour_bands - 1, std::max(0.0, t) * colour_bands)])
               << "\" d=\"";
           path_of(polygon, v, f, scale, out);
           out << "\"/>";

@@ -112,6 +112,30 @@ namespace compliant
       const double most  = std::sqrt(2e4 / std::max(faces, 1.0));
       return std::max(1u, std::min<unsigned int>((dim == 2 ? 2 : 1) * discretization.fe->degree, most));
     }
+
+    // Every rank's vector on rank 0 (empty elsewhere). Plain MPI_Gatherv: Utilities::MPI::gather
+    // serializes and compresses, which cost more than drawing the picture.
+    std::vector<std::vector<double>> gather_doubles(const std::vector<double> &mine, MPI_Comm communicator)
+    {
+      const int  size = Utilities::MPI::n_mpi_processes(communicator);
+      const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
+      int        count = static_cast<int>(mine.size());
+      std::vector<int> counts(root ? size : 0), offsets(root ? size : 0);
+      MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, communicator);
+      std::vector<double> all;
+      if (root)
+        {
+          for (int r = 1; r < size; ++r)
+            offsets[r] = offsets[r - 1] + counts[r - 1];
+          all.resize(offsets.back() + counts.back());
+        }
+      MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
+                  communicator);
+      std::vector<std::vector<double>> parts;
+      for (int r = 0; root && r < size; ++r)
+        parts.emplace_back(all.begin() + offsets[r], all.begin() + offsets[r] + counts[r]);
+      return parts;
+    }
   } // namespace
 
   template <int dim>
@@ -171,10 +195,9 @@ namespace compliant
                   }
               }
         }
-    const auto      parts = Utilities::MPI::gather(discretization.communicator, flatten(local), 0);
     PictureGeometry whole;
     whole.dim = dim;
-    for (const auto &part : parts)
+    for (const auto &part : gather_doubles(flatten(local), discretization.communicator))
       append_flattened(part, whole);
     return whole;
   }
