@@ -10,7 +10,9 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$root/build}
 
 packages=(cmake g++ make ccache pkg-config libdeal.ii-dev gmsh libgmsh-dev openmpi-bin libopenmpi-dev
-          python3-matplotlib python3-h5py python3-numpy python3-scipy numdiff googletest libgtest-dev)
+          python3-matplotlib python3-h5py python3-numpy python3-scipy python3-pil numdiff googletest libgtest-dev)
+# Tests only: case.report_page opens report.html in a real (headless) browser.
+if [ "$mode" = test ]; then packages+=(chromium); fi
 # Benchmarks only, never the tests: the same problems in FEniCSx (dolfinx) and CalculiX.
 if [ "$mode" = peers ]; then packages+=(calculix-ccx python3-dolfinx); fi
 missing=()

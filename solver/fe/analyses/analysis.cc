@@ -1,4 +1,5 @@
 #include "analyses/analysis.h"
+#include "output/report_files.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -6,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 
@@ -99,7 +101,8 @@ namespace compliant
 
   void finish_run(const RunContext &context, RunSummary &summary,
                   const std::map<std::string, double>            &variables,
-                  const std::function<void(const std::string &)> &write_fields)
+                  const std::function<void(const std::string &)> &write_fields,
+                  const PictureMaker                             &draw_pictures)
   {
     const auto &p    = context.parameters;
     const bool  root = dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0;
@@ -132,13 +135,26 @@ namespace compliant
     MPI_Barrier(context.communicator);
     if (p.write_fields && write_fields)
       write_fields(p.output_directory);
+    const bool           pictures_on = p.write_pictures; // report.html too, pictures if the analysis draws
+    const auto           start       = std::chrono::steady_clock::now();
+    std::vector<Picture> pictures;
+    if (pictures_on && draw_pictures)
+      pictures = draw_pictures(summary);
+    const double drawing = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (root)
       {
         write_summary(summary, p.output_directory + "/summary.json");
+        if (pictures_on)
+          write_pictures_and_report(p.output_directory, summary, pictures, drawing);
         std::cout << "\n"
                   << format_table(summary) << "\nResults in " << p.output_directory
-                  << "/ (summary.json" << (p.write_fields ? ", fields.xdmf" : "") << ")"
-                  << std::endl;
+                  << "/ (summary.json" << (p.write_fields ? ", fields.xdmf" : "");
+        for (const auto &picture : pictures)
+          std::cout << ", " << picture.file;
+        if (pictures_on)
+          std::cout << ", report.html; pictures and page "
+                    << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s";
+        std::cout << ")" << std::endl;
       }
   }
 } // namespace compliant

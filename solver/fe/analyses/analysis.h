@@ -10,6 +10,7 @@
 #include "input/case_file.h"
 #include "mesh/gmsh_geometry.h"
 #include "mesh/mesh_partition.h"
+#include "output/report_page.h"
 #include "output/summary.h"
 #include "quantities/comparison.h"
 
@@ -53,9 +54,13 @@ namespace compliant
   // run that cannot write its results stops at once with a message, not after the solve.
   void check_output_directory(const CaseParameters &parameters, MPI_Comm communicator);
 
-  // Shared end of a run: derived quantities, closed-form comparisons, fields, summary, table.
-  // Everything that can fail on user input happens before the first file is written.
+  // Shared end of a run: derived quantities, closed-form comparisons, fields, summary, table, and
+  // with Output/Pictures the pictures draw_pictures makes from the finished summary (collective;
+  // complete on rank 0) and report.html. Everything that can fail on user input happens before
+  // the first file is written.
+  using PictureMaker = std::function<std::vector<Picture>(const RunSummary &)>;
   void finish_run(const RunContext &context, RunSummary &summary,
                   const std::map<std::string, double>         &variables,
-                  const std::function<void(const std::string &)> &write_fields);
+                  const std::function<void(const std::string &)> &write_fields,
+                  const PictureMaker                             &draw_pictures = {});
 } // namespace compliant

@@ -4,6 +4,7 @@
 #include "analyses/linear_static_model.h"
 #include "quantities/comparison.h"
 #include "output/field_output.h"
+#include "output/run_pictures.h"
 
 #include <iostream>
 
@@ -48,7 +49,8 @@ namespace compliant
                       << model.seconds << " s)" << std::endl;
         }
       finish_run(context, summary, problem.expression_variables(),
-                 [&](const std::string &directory) { write_fields(problem, directory); });
+                 [&](const std::string &directory) { write_fields(problem, directory); },
+                 [&](const RunSummary &finished) { return static_pictures(problem, finished); });
       return 0;
     }
   } // namespace

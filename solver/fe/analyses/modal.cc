@@ -8,6 +8,7 @@
 #include "elasticity/global_constraints.h"
 #include "analyses/modal_eigensolver.h"
 #include "analyses/modal_fields.h"
+#include "output/run_pictures.h"
 #include "analyses/modal_mass_matrix.h"
 #include "analyses/setup_without_supports.h"
 #include "elasticity/linear_elastic_problem.h"
@@ -293,7 +294,7 @@ namespace compliant
       variables["rho"] = problem.materials.begin()->second.density;
       finish_run(context, summary, variables, [&](const std::string &directory) {
         write_mode_shapes(problem, model.result.eigenvectors, directory);
-      });
+      }, [&](const RunSummary &finished) { return mode_pictures<dim>(problem, model.result.eigenvectors, finished); });
       return 0;
     }
   } // namespace

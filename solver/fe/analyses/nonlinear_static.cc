@@ -14,6 +14,7 @@
 #include "finite_strain/finite_strain_problem.h"
 #include "nonlinear/load_stepping.h"
 #include "output/field_output.h"
+#include "output/run_pictures.h"
 #include "quantities/quantities.h"
 
 #include <algorithm>
@@ -379,7 +380,8 @@ namespace compliant
     if (amend_summary)
       amend_summary(summary);
     finish_run(context, summary, problem.expression_variables(),
-               [&](const std::string &directory) { write_fields(problem, directory); });
+               [&](const std::string &directory) { write_fields(problem, directory); },
+               [&](const RunSummary &finished) { return static_pictures(problem, finished, curve.file); });
     if (!failure.empty())
       {
         if (root)
@@ -411,6 +413,7 @@ namespace compliant
             CaseParameters scratch   = enriched;
             scratch.output_directory = p.output_directory + "/.error_estimate";
             scratch.write_fields     = false;
+            scratch.write_pictures   = false;
             const RunContext scratch_context{scratch, enriched_context.prm, enriched_context.geometry, false,
                                              enriched_context.communicator};
             Quantities       plus;

@@ -288,6 +288,15 @@ namespace compliant
         prm.declare_entry("Fields", "true", Patterns::Bool(),
                           "Write HDF5 + XDMF fields (displacement, strain, stress, von Mises, "
                           "material and partition id) for ParaView.");
+        prm.declare_entry("Pictures", "true", Patterns::Bool(),
+                          "Draw the result beside summary.json and write report.html, a "
+                          "self-contained page for a design review (case, model, mesh, solver, "
+                          "quantities with their estimates, closed-form comparisons and warnings, "
+                          "pictures, timings). picture.svg: the deformed part coloured by von Mises "
+                          "with the peak marked and the undeformed part behind (magnified, the "
+                          "factor printed, when displacements are small; 3D: two views drawn "
+                          "in-process); modal runs: mode_<k>.svg per mode; nonlinear static runs: "
+                          "also load_displacement.svg from curve.csv.");
       }
       prm.leave_subsection();
     }

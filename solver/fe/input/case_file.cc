@@ -376,6 +376,7 @@ namespace compliant
     prm.enter_subsection("Output");
     p.output_directory = prm.get("Directory");
     p.write_fields     = prm.get_bool("Fields");
+    p.write_pictures   = prm.get_bool("Pictures");
     prm.leave_subsection();
     if (p.output_directory.empty())
       p.output_directory = default_output_directory(p.case_file);

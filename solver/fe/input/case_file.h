@@ -85,6 +85,7 @@ namespace compliant
 
     std::string output_directory;
     bool        write_fields = true;
+    bool        write_pictures = true; // picture(s) and report.html beside the summary
   };
 
   // Declares every entry (input/case_declarations.cc). Geometry parameters of the given .geo file

@@ -12,6 +12,7 @@
 #include "ladder/model_checks.h"
 #include "mesh/memory_estimate.h"
 #include "output/field_output.h"
+#include "output/run_pictures.h"
 #include "quantities/comparison.h"
 #include "quantities/out_of_plane_bound.h"
 
@@ -316,7 +317,8 @@ namespace compliant
     summary.quantities["target_relative_error"] = target.relative_error;
     add_estimates_to_summary(summary, rungs.back());
     finish_run(chosen_context, summary, problem.expression_variables(),
-               [&](const std::string &directory) { write_fields(problem, directory); });
+               [&](const std::string &directory) { write_fields(problem, directory); },
+               [&](const RunSummary &finished) { return static_pictures(problem, finished); });
     if (root)
       write_ladder_csv(chosen_parameters->output_directory, names, all_rows());
     return met ? 0 : 4;

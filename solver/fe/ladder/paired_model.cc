@@ -131,6 +131,7 @@ namespace compliant
                        "plane stress only)");
     q.output_directory = primary.output_directory;
     q.write_fields     = primary.write_fields;
+    q.write_pictures   = primary.write_pictures;
     paired.geometry    = mesh_case_geometry(q, communicator);
 
     // The two models must describe one part: the same materials, and the same volume up to the
