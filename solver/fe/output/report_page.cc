@@ -172,7 +172,8 @@ figure{margin:10px 0}figcaption{font-size:13px;color:#444}img{max-width:100%;bor
     quantity_table(s, true, out);
     out << "<p class=\"meta\">Pictures and this page: " << short_number(picture_seconds, 2)
         << " s (not in summary.json).</p>\n";
-    out << "<h2>Case file</h2>\n<pre>" << escape_xml(case_text) << "</pre>\n</body></html>\n";
+    out << "<h2>Case file</h2>\n<p class=\"meta\">As on disk; values given with --set on the command line "
+           "are not in it (the geometry parameters and settings above are the run's own).</p>\n<pre>" << escape_xml(case_text) << "</pre>\n</body></html>\n";
     return out.str();
   }
 } // namespace compliant
