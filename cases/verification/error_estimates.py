@@ -203,7 +203,13 @@ def main():
            "J(u+) - J(u) with the dual at degree p+1 on the same mesh (quadrilaterals, hexahedra) or on the "
            "once-refined mesh at degree 2 (triangles, tetrahedra at degree 2). *effectivity* = "
            "`<q>_error_estimate_absolute` / |value - reference| (the issue asks for 0.5 to 3); *cost* = "
-           "`time_error_estimate` / `time_total` (the enriched solve against the model's own run).", "",
+           "`time_error_estimate_solve` / `time_solve`, the enriched (dual) solve against the model's own "
+           "solve, in the same process (the issue asks for at most 1). Under each table the costs per level: "
+           "iterations, solve times and the whole enriched model (mesh, set-up, assembly, solve, quantities) "
+           "against the whole model. Where the model is solved by the matrix-free p-multigrid, the enriched "
+           "solve starts from the degree-p solution carried to degree p + 1, stops at a residual 1e-5 of "
+           "that start, and shares the model's degree-1 level (matrix and AMG); MUMPS (degree 1, "
+           "triangles, tetrahedra) factors the enriched system afresh.", "",
            "References:", "",
            "- Lame cylinder (a = 10, b = 20, p = 10, E = 1000, nu = 0.3, plane strain; Timoshenko and Goodier "
            "sec. 28): sigma_r = C - D/r^2, sigma_theta = C + D/r^2 with C = p a^2/(b^2 - a^2), "
@@ -222,7 +228,7 @@ def main():
            "times the reference's uncertainty is not rated.", "",
            "The exact values: " + ", ".join("%s = %.10g" % kv for kv in CYL.items()) + "; sphere: "
            + ", ".join("%s = %.10g" % kv for kv in SPH.items()) + ".", ""]
-    summary_rows = []
+    summary_rows, cost_rows = [], []
     for problem in PROBLEMS:
         print("==", problem["name"], flush=True)
         refs, ref_text = references(problem)
@@ -237,16 +243,23 @@ def main():
                 if not singular else "| level | DoFs | quantity | value | change | estimate | estimate / change | cost |",
                 "|---|---|---|---|---|---|---|---|---|" if not singular else "|---|---|---|---|---|---|---|---|"]
         previous = {}
+        costs = ["| level | model: DoFs, solver, iterations, solve | enriched: DoFs, iterations, solve | "
+                 "solve ratio | enriched model / model |", "|---|---|---|---|---|"]
         for label, sets in problem["levels"]:
             s = run(problem["case"], problem["fixed"] + sets + ["Quantities/Error estimates=true"])
             q = s["quantities"]
-            cost = q["time_error_estimate"] / q["time_total"]
+            cost = q["time_error_estimate_solve"] / q["time_solve"]
+            costs.append("| %s | %d, %s, %d, %.3g s | %d, %d, %.3g s | %.2f | %.3g s / %.3g s = %.2f |" % (
+                label, q["n_dofs"], s["settings"].get("solver", "?"), q["solver_iterations"], q["time_solve"],
+                q["error_estimate_dofs"], q["error_estimate_iterations"], q["time_error_estimate_solve"], cost,
+                q["time_error_estimate"], q["time_total"], q["time_error_estimate"] / q["time_total"]))
+            cost_rows.append((problem["name"], s["settings"].get("solver", "?"), cost))
             for k in quantities:
                 value, est = q[k], q[k + "_error_estimate_absolute"]
                 if singular:
                     change = value - previous[k] if k in previous else None
                     previous[k] = value
-                    out.append("| %s | %d | %s | %.8g | %s | %.3g | %s | %.1f |" % (
+                    out.append("| %s | %d | %s | %.8g | %s | %.3g | %s | %.2f |" % (
                         label, q["n_dofs"], k, value, "" if change is None else "%.3g" % change, est,
                         "" if change is None else "%.2f" % (est / abs(change)), cost))
                     print(out[-1], flush=True)
@@ -255,22 +268,25 @@ def main():
                 true = abs(value - ref)
                 rated = true > 5 * unc and true > 1e-13 * max(abs(ref), 1.0)
                 eff = est / true if rated else None
-                out.append("| %s | %d | %s | %.10g | %.10g | %.3g (%.2g %%) | %.3g | %s | %.1f |" % (
+                out.append("| %s | %d | %s | %.10g | %.10g | %.3g (%.2g %%) | %.3g | %s | %.2f |" % (
                     label, q["n_dofs"], k, value, ref, true, 100 * true / abs(ref), est,
                     "%.2f" % eff if rated else "not rated (reference +- %.2g)" % unc, cost))
                 print(out[-1], flush=True)
                 summary_rows.append((problem["name"], label, k, eff, cost))
-        out.append("")
+        out += ["", "Cost per level:", ""] + costs + [""]
     rated = [r for r in summary_rows if r[3] is not None]
     inside = [r for r in rated if 0.5 <= r[3] <= 3]
     out += ["## Summary", "",
-            "%d of %d rated effectivities lie within 0.5-3 (range %.2f to %.2f); cost ratio (estimate / model) "
-            "%.1f to %.1f." % (len(inside), len(rated), min(r[3] for r in rated), max(r[3] for r in rated),
-                               min(r[4] for r in summary_rows), max(r[4] for r in summary_rows)), ""]
+            "%d of %d rated effectivities lie within 0.5-3 (range %.2f to %.2f)." % (
+                len(inside), len(rated), min(r[3] for r in rated), max(r[3] for r in rated)), ""]
+    for solver in sorted(set(r[1] for r in cost_rows)):
+        ratios = [r[2] for r in cost_rows if r[1] == solver]
+        out += ["Enriched solve / model solve, model solved by %s: %.2f to %.2f over %d levels (%d above 1)." % (
+            solver, min(ratios), max(ratios), len(ratios), sum(1 for x in ratios if x > 1)), ""]
     outside = [r for r in rated if not 0.5 <= r[3] <= 3]
     if outside:
         out += ["Outside 0.5-3:", ""] + ["- %s, %s, %s: %.2f" % r[:4] for r in outside] + [""]
-    print("\n".join(out[-4:]))
+    print("\n".join(out[-12:]))
     open(os.path.join(HERE, "error_estimates.md"), "w").write("\n".join(out) + "\n")
 
 

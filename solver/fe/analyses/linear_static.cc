@@ -41,12 +41,16 @@ namespace compliant
             {
               throw InputError("case file '" + p.case_file + "', Quantities/Derived: " + e.what());
             }
-          const auto estimates = estimate_quantity_errors<dim>(context, p, values, problem.triangulation.all_reference_cells_are_hyper_cube());
+          const auto estimates = estimate_quantity_errors<dim>(
+            context, p, values, problem.triangulation.all_reference_cells_are_hyper_cube(), {}, &problem);
           add_error_estimates(summary, estimates);
           if (estimates.available && dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0)
             std::cout << "Error estimates: " << estimates.absolute.size() << " quantities, enriched model "
-                      << estimates.dual_dofs << " DoFs in " << estimates.dual_seconds << " s (the model itself "
-                      << model.seconds << " s)" << std::endl;
+                      << estimates.dual_dofs << " DoFs in " << estimates.dual_seconds << " s, its solve "
+                      << estimates.dual_solve_seconds << " s in " << estimates.dual_iterations
+                      << " iterations (the model itself " << model.seconds << " s, its solve "
+                      << problem.statistics.solve_seconds << " s in " << problem.statistics.iterations
+                      << " iterations)" << std::endl;
         }
       finish_run(context, summary, problem.expression_variables(),
                  [&](const std::string &directory) { write_fields(problem, directory); },

@@ -11,7 +11,8 @@ namespace compliant
 {
   template <int dim>
   LinearStaticModel<dim> solve_linear_static_model(const RunContext &context, const CaseParameters &p,
-                                                   const bool keep_matrix)
+                                                   const bool keep_matrix,
+                                                   const std::function<void(LinearElasticProblem<dim> &)> &before_solve)
   {
     MPI_Comm               comm = context.communicator;
     const bool             root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
@@ -64,6 +65,8 @@ namespace compliant
       {
         throw InputError("case file '" + p.case_file + "': " + e.what());
       }
+    if (before_solve)
+      before_solve(problem);
     problem.solve();
     if (root)
       {
@@ -98,6 +101,8 @@ namespace compliant
     return model;
   }
 
-  template LinearStaticModel<2> solve_linear_static_model<2>(const RunContext &, const CaseParameters &, bool);
-  template LinearStaticModel<3> solve_linear_static_model<3>(const RunContext &, const CaseParameters &, bool);
+  template LinearStaticModel<2> solve_linear_static_model<2>(
+    const RunContext &, const CaseParameters &, bool, const std::function<void(LinearElasticProblem<2> &)> &);
+  template LinearStaticModel<3> solve_linear_static_model<3>(
+    const RunContext &, const CaseParameters &, bool, const std::function<void(LinearElasticProblem<3> &)> &);
 } // namespace compliant

@@ -6,6 +6,7 @@
 #include "elasticity/linear_elastic_problem.h"
 #include "quantities/quantities.h"
 
+#include <functional>
 #include <memory>
 
 namespace compliant
@@ -22,7 +23,10 @@ namespace compliant
   // Case-file mistakes throw InputError naming the case file; with --check it stops after the
   // set-up (stopped_for_check). Prints the mesh and solver lines on rank 0. keep_matrix: the
   // stiffness matrix is assembled and kept (no matrix-free solve), for analyses that go on with it.
+  // before_solve, if given, sees the assembled problem just before its solve (the error
+  // estimates set a warm start there).
   template <int dim>
-  LinearStaticModel<dim> solve_linear_static_model(const RunContext &context, const CaseParameters &parameters,
-                                                   bool keep_matrix = false);
+  LinearStaticModel<dim> solve_linear_static_model(
+    const RunContext &context, const CaseParameters &parameters, bool keep_matrix = false,
+    const std::function<void(LinearElasticProblem<dim> &)> &before_solve = {});
 } // namespace compliant

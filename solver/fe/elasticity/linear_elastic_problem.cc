@@ -1,4 +1,5 @@
 #include "elasticity/linear_elastic_problem.h"
+#include "linear_algebra/direct_factorization.h"
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/function_parser.h>
@@ -411,6 +412,7 @@ namespace compliant
   void LinearElasticProblem<dim>::assemble()
   {
     Timer timer;
+    factorization.reset(); // of the matrix assembled before
     // The matrix-free solver needs only C^T f; it moves prescribed values to the right side itself.
     const bool with_matrix = solver_method != SolverMethod::matrix_free;
     if (with_matrix)

@@ -18,8 +18,19 @@
 
 #include <memory>
 
+namespace compliant::fast_solver
+{
+  struct DegreeOneLevel; // fast_solver/coarse_level_solver.h
+  template <int dim, typename Number>
+  class ElasticityOperator;
+  template <int dim, typename Operator>
+  class PMultigridSolver;
+} // namespace compliant::fast_solver
+
 namespace compliant
 {
+  class DirectFactorization; // linear_algebra/direct_factorization.h
+
   struct SolverStatistics
   {
     unsigned int iterations = 0;
@@ -27,6 +38,8 @@ namespace compliant
     // Matrix-free p-multigrid: set-up of the levels (inside solve_seconds), DoFs per level.
     double                    preconditioner_setup_seconds = 0;
     unsigned int              coarse_iterations = 0; // inner CG on degree 1, summed
+    double                    initial_residual  = 0; // |f - K u0| of the matrix-free solve, u0 its start
+    bool                      degree_one_reused = false; // another model's degree-1 level served
     std::vector<std::size_t>  level_dofs;
     std::string               multigrid_note; // smoother and coarse solve, and why
   };
@@ -102,6 +115,22 @@ namespace compliant
     // Set by an analysis before setup() when it only needs K u = f solved (linear static): then
     // 'auto' and 'matrix-free' may skip the assembled matrix.
     bool matrix_free_allowed = false;
+    // Set before solve() to start the matrix-free solve from this guess (owned DoFs) and stop it
+    // once the residual has dropped by warm_start_reduction from the guess's: the error
+    // estimates' enriched model starts from the degree-p solution. Ignored by MUMPS and GAMG.
+    dealii::PETScWrappers::MPI::Vector warm_start;
+    double                             warm_start_reduction = 1e-3;
+    // With Quantities/Error estimates, the matrix-free solve's degree-1 level (matrix and AMG) is
+    // kept here; the enriched model of the same mesh, given it before its solve in
+    // reused_degree_one_level, uses it instead of building its own.
+    std::shared_ptr<fast_solver::DegreeOneLevel> degree_one_level, reused_degree_one_level;
+    // MUMPS: the factor of the last solve, kept until the next assembly, so that a dual of the
+    // same matrix (goal-oriented refinement) is a back-substitution.
+    std::shared_ptr<DirectFactorization> factorization;
+    // Set before solve() by whoever solves duals of this matrix (goal-oriented refinement): the
+    // matrix-free p-multigrid is then kept and serves them, set-up and all.
+    bool keep_solver_for_duals = false;
+    std::shared_ptr<fast_solver::PMultigridSolver<dim, fast_solver::ElasticityOperator<dim, double>>> kept_solver;
     // The solver actually used (Linear solver/Method with 'auto' resolved) and why, for the log.
     SolverMethod solver_method = SolverMethod::automatic; // the one chosen
     std::string  solver_note;
@@ -120,6 +149,8 @@ namespace compliant
     // Solves with the matrix-free p-multigrid; false if it did not converge and 'auto' allows
     // falling back (solver_note says so).
     bool solve_matrix_free(dealii::PETScWrappers::MPI::Vector &x);
+    // MUMPS LU of system_matrix, factored at the first solve after an assembly; returns 1.
+    unsigned int solve_direct(dealii::PETScWrappers::MPI::Vector &x);
     // Traction from Loads/Traction and Loads/Total force, per boundary id.
     std::map<int, dealii::Tensor<1, dim>> boundary_tractions() const;
     double boundary_measure(int boundary_id) const;

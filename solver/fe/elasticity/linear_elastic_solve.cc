@@ -7,6 +7,7 @@
 
 #include "fast_solver/elasticity_operator.h"
 #include "fast_solver/p_multigrid_solver.h"
+#include "linear_algebra/direct_factorization.h"
 #include "linear_algebra/petsc_linear_solver.h"
 #include "linear_algebra/rigid_body_modes.h"
 
@@ -103,8 +104,10 @@ namespace compliant
           settings.max_iterations = std::min(settings.max_iterations, 300u);
         try
           {
-            statistics.iterations =
-              solve_linear_system(system_matrix, x, system_rhs, modes, settings, dim);
+            if (solver_method == SolverMethod::direct)
+              statistics.iterations = solve_direct(x);
+            else
+              statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, modes, settings, dim);
           }
         catch (const std::runtime_error &e)
           {
@@ -113,14 +116,28 @@ namespace compliant
             solver_note += "; CG + GAMG did not converge in " +
                            std::to_string(settings.max_iterations) +
                            " iterations: solved again with MUMPS (direct)";
-            solver_method   = SolverMethod::direct;
-            settings.method = SolverMethod::direct;
-            statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, {}, settings);
+            solver_method         = SolverMethod::direct;
+            statistics.iterations = solve_direct(x);
           }
       }
     constraints.distribute(x);
     solution = x;
     statistics.solve_seconds = timer.wall_time();
+  }
+
+  template <int dim>
+  unsigned int LinearElasticProblem<dim>::solve_direct(PETScWrappers::MPI::Vector &x)
+  {
+    if (!factorization)
+      {
+        if (!parameters.petsc_options.empty() &&
+            PetscOptionsInsertString(nullptr, parameters.petsc_options.c_str()) != 0)
+          throw std::runtime_error("PETSc could not read 'Linear solver/PETSc options'");
+        factorization = std::make_shared<DirectFactorization>();
+        factorization->factor(system_matrix, false, true);
+      }
+    factorization->solve(x, system_rhs);
+    return 1;
   }
 
   template <int dim>
@@ -132,6 +149,7 @@ namespace compliant
                                     std::min(parameters.solver_max_iterations, 300u) :
                                     parameters.solver_max_iterations;
     settings.petsc_options      = parameters.petsc_options;
+    settings.reused_degree_one_level = reused_degree_one_level;
     const bool plane_stress     = dim == 2 && parameters.model == Model::plane_stress;
     const auto lame = [&](const types::material_id id) {
       const Material &material = materials.at(id);
@@ -142,7 +160,10 @@ namespace compliant
       return std::make_pair(lambda * thickness, mu * thickness);
     };
     using Operator = fast_solver::ElasticityOperator<dim, double>;
-    fast_solver::PMultigridSolver<dim, Operator> solver(
+    using Solver   = fast_solver::PMultigridSolver<dim, Operator>;
+    // A dual of the same matrix reuses the primal's solver (keep_solver_for_duals).
+    const bool reused = kept_solver != nullptr;
+    const auto built  = reused ? kept_solver : std::make_shared<Solver>(
       *mapping, dof_handler,
       [this](const DoFHandler<dim> &dofs, AffineConstraints<double> &level_constraints) {
         add_support_constraints(dofs, level_constraints, true);
@@ -152,7 +173,10 @@ namespace compliant
         level_operator.reinit(level_mapping, dofs, level_constraints, lame);
       },
       settings, communicator);
-    statistics.preconditioner_setup_seconds = solver.statistics().setup_seconds;
+    Solver &solver = *built;
+    if (keep_solver_for_duals)
+      kept_solver = built;
+    statistics.preconditioner_setup_seconds = reused ? 0. : solver.statistics().setup_seconds;
     statistics.level_dofs.assign(solver.statistics().level_dofs.begin(),
                                  solver.statistics().level_dofs.end());
     {
@@ -160,12 +184,18 @@ namespace compliant
       std::ostringstream note;
       note << "largest cell aspect ratio " << std::setprecision(3) << s.largest_aspect_ratio
            << ": Chebyshev degree " << s.smoothing_degree << " over range " << s.smoothing_range
-           << ", degree-1 level by " << (s.coarse_direct ? "MUMPS" : "GAMG");
+           << ", degree-1 level by " << (s.coarse_direct ? "MUMPS" : "GAMG")
+           << (s.coarse_reused ? ", the degree-p model's" : "");
       statistics.multigrid_note = note.str();
     }
     try
       {
-        statistics.iterations = solver.solve(system_rhs, constraints, x);
+        const fast_solver::WarmStart start{warm_start, warm_start_reduction};
+        statistics.iterations = solver.solve(system_rhs, constraints, x, warm_start.size() > 0 ? &start : nullptr);
+        statistics.initial_residual = solver.statistics().initial_residual;
+        statistics.degree_one_reused = solver.statistics().coarse_reused;
+        if (parameters.error_estimates)
+          degree_one_level = solver.degree_one_level();
         statistics.coarse_iterations = solver.statistics().coarse_iterations;
       }
     catch (const SolverControl::NoConvergence &e)

@@ -12,6 +12,7 @@
 
 #include <petscksp.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,17 @@ namespace compliant::fast_solver
     KSP                                        ksp = nullptr;
     mutable dealii::PETScWrappers::MPI::Vector rhs, correction;
     mutable unsigned int                       total_iterations = 0;
+  };
+
+  // The degree-1 level as a whole: its matrix, its solver, and a fingerprint of its DoFs (sums of
+  // the owned DoFs' indices times their vertices' coordinates). Kept after a solve, it serves a
+  // second solver on the same mesh numbered the same way (the error estimates' degree-(p+1)
+  // model), which then skips the degree-1 matrix and the AMG set-up.
+  struct DegreeOneLevel
+  {
+    dealii::PETScWrappers::MPI::SparseMatrix matrix;
+    std::unique_ptr<CoarseLevelSolver>       solver;
+    std::vector<double>                      fingerprint;
+    bool                                     direct = false;
   };
 } // namespace compliant::fast_solver

@@ -28,6 +28,8 @@
 
 namespace compliant::fast_solver
 {
+  struct DegreeOneLevel; // fast_solver/coarse_level_solver.h
+
   struct PMultigridSettings
   {
     double       relative_tolerance = 1e-10;
@@ -49,6 +51,18 @@ namespace compliant::fast_solver
     // flexible (the preconditioner then varies from one application to the next).
     double       coarse_tolerance   = 0.03;
     std::string  petsc_options;           // passed to the coarse GAMG
+    // Another solver's degree-1 level on the same mesh: used instead of building one when its
+    // DoFs' fingerprint matches this mesh's (else built as usual, and statistics say so).
+    std::shared_ptr<DegreeOneLevel> reused_degree_one_level;
+  };
+
+  // A solve that starts from a guess close to the answer (the degree-p solution carried to
+  // degree p + 1) and stops when the residual has dropped by `reduction` from the guess's own,
+  // not from the right-hand side's: what is left to find is the small difference.
+  struct WarmStart
+  {
+    const dealii::PETScWrappers::MPI::Vector &guess; // owned DoFs, prescribed values included
+    double                                    reduction;
   };
 
   struct PMultigridStatistics
@@ -56,11 +70,13 @@ namespace compliant::fast_solver
     unsigned int                         iterations    = 0;
     unsigned int                         coarse_iterations = 0; // inner CG, summed
     double                               lifted_rhs_norm   = 0; // |f - K g| of the last solve
+    double                               initial_residual  = 0; // |f - K u0|, u0 the start
     double                               setup_seconds = 0;
     double                               largest_aspect_ratio = 1;
     unsigned int                         smoothing_degree = 0;
     double                               smoothing_range  = 0;
     bool                                 coarse_direct    = false;
+    bool                                 coarse_reused    = false; // settings' degree-1 level used
     std::vector<dealii::types::global_dof_index> level_dofs; // coarse to fine
   };
 
@@ -94,15 +110,20 @@ namespace compliant::fast_solver
     // Solves K u = f where u takes the prescribed values of 'constraints' (inhomogeneous).
     // condensed_rhs is C^T f with zero constrained rows (distribute_local_to_global of the cell
     // right-hand sides alone). Returns u on owned DoFs with constrained entries zero: the caller
-    // runs constraints.distribute(). Throws dealii::SolverControl::NoConvergence.
+    // runs constraints.distribute(). Throws dealii::SolverControl::NoConvergence. Without a
+    // warm start CG starts from zero and stops at relative_tolerance times |f - K g|.
     unsigned int solve(const dealii::PETScWrappers::MPI::Vector &condensed_rhs,
                        const dealii::AffineConstraints<double>   &constraints,
-                       dealii::PETScWrappers::MPI::Vector         &solution);
+                       dealii::PETScWrappers::MPI::Vector         &solution,
+                       const WarmStart                           *start = nullptr);
 
     const PMultigridStatistics &statistics() const { return stats; }
+    // The degree-1 level (matrix, solver, fingerprint), to hand to another solver of this mesh.
+    std::shared_ptr<DegreeOneLevel> degree_one_level() const;
 
   private:
-    void build_smoother_and_coarse_solver();
+    // fingerprint: the degree-1 DoFs' (empty in update(): the mesh has not changed).
+    void build_smoother_and_coarse_solver(const std::vector<double> &fingerprint);
 
     struct Levels;
     std::unique_ptr<Levels> levels;

@@ -46,10 +46,43 @@ namespace compliant::fast_solver
     MGLevelObject<std::unique_ptr<Operator>>       operators;
     MGLevelObject<MGTwoLevelTransfer<dim, VectorType>> two_level_transfers;
     std::unique_ptr<TransferType>                  transfer;
-    PETScWrappers::MPI::SparseMatrix               coarse_matrix;
-    std::unique_ptr<CoarseLevelSolver>               coarse_solver;
+    std::shared_ptr<DegreeOneLevel>                coarse;
+    const Mapping<dim>                            *mapping = nullptr;
     MGSmootherPrecondition<Operator, SmootherType, VectorType> smoother;
   };
+
+  namespace
+  {
+    // Sums over the owned DoFs of (index + 1) times each coordinate of the DoF's vertex: equal on
+    // two DoFHandlers exactly when they number the same vertices alike (to round-off).
+    template <int dim>
+    std::vector<double> degree_one_fingerprint(const DoFHandler<dim> &dofs, MPI_Comm communicator)
+    {
+      std::vector<double>              sums(dim + 1, 0.);
+      std::vector<types::global_dof_index> indices(dofs.get_fe().n_dofs_per_cell());
+      std::vector<bool>                seen(dofs.locally_owned_dofs().n_elements(), false);
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(indices);
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              if (dofs.locally_owned_dofs().is_element(indices[i]))
+                {
+                  const auto local = dofs.locally_owned_dofs().index_within_set(indices[i]);
+                  if (seen[local])
+                    continue;
+                  seen[local]   = true;
+                  const auto &x = cell->vertex(dofs.get_fe().system_to_component_index(i).second);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    sums[d] += (indices[i] + 1.) * x[d];
+                  sums[dim] += 1;
+                }
+          }
+      Utilities::MPI::sum(sums, communicator, sums);
+      sums.push_back(dofs.n_dofs());
+      return sums;
+    }
+  } // namespace
 
   template <int dim, typename Operator>
   PMultigridSolver<dim, Operator>::PMultigridSolver(const Mapping<dim>       &mapping,
@@ -70,6 +103,7 @@ namespace compliant::fast_solver
     L.constraints.resize(0, top);
     L.operators.resize(0, top);
     L.two_level_transfers.resize(0, top);
+    L.mapping = &mapping;
 
     for (unsigned int level = 0; level <= top; ++level)
       {
@@ -113,13 +147,30 @@ namespace compliant::fast_solver
                            L.dofs[0]->n_dofs() <= (dim == 3 ? settings.direct_coarse_limit_3d :
                                                                   settings.direct_coarse_limit));
 
-    coarse_rigid_body_modes = rigid_body_modes(mapping, *L.dofs[0], communicator);
-    build_smoother_and_coarse_solver();
+    const auto fingerprint = degree_one_fingerprint(*L.dofs[0], communicator);
+    const auto &reused     = settings.reused_degree_one_level;
+    stats.coarse_reused    = reused && reused->fingerprint.size() == fingerprint.size() &&
+                          std::equal(fingerprint.begin(), fingerprint.end(), reused->fingerprint.begin(),
+                                     [](const double a, const double b) {
+                                       return std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b));
+                                     });
+    if (stats.coarse_reused)
+      L.coarse = reused, stats.coarse_direct = reused->direct;
+    else
+      coarse_rigid_body_modes = rigid_body_modes(mapping, *L.dofs[0], communicator);
+    build_smoother_and_coarse_solver(fingerprint);
     stats.setup_seconds = timer.wall_time();
   }
 
+
   template <int dim, typename Operator>
-  void PMultigridSolver<dim, Operator>::build_smoother_and_coarse_solver()
+  std::shared_ptr<DegreeOneLevel> PMultigridSolver<dim, Operator>::degree_one_level() const
+  {
+    return levels->coarse;
+  }
+
+  template <int dim, typename Operator>
+  void PMultigridSolver<dim, Operator>::build_smoother_and_coarse_solver(const std::vector<double> &fingerprint)
   {
     auto              &L   = *levels;
     const unsigned int top = L.operators.max_level();
@@ -136,11 +187,17 @@ namespace compliant::fast_solver
       }
     L.smoother.initialize(L.operators, smoother_data);
 
-    L.coarse_solver.reset(); // it refers to the matrix rebuilt here
-    L.operators[0]->compute_matrix(L.coarse_matrix, communicator);
-    L.coarse_solver = std::make_unique<CoarseLevelSolver>(
-      L.coarse_matrix, coarse_rigid_body_modes, dim,
-      stats.coarse_direct, settings.coarse_tolerance, settings.petsc_options);
+    if (stats.coarse_reused)
+      return;
+    // A new level every time: a solver that reused this one keeps the old.
+    auto coarse = std::make_shared<DegreeOneLevel>();
+    L.operators[0]->compute_matrix(coarse->matrix, communicator);
+    coarse->solver = std::make_unique<CoarseLevelSolver>(coarse->matrix, coarse_rigid_body_modes, dim,
+                                                         stats.coarse_direct, settings.coarse_tolerance,
+                                                         settings.petsc_options);
+    coarse->fingerprint = fingerprint.empty() && L.coarse ? L.coarse->fingerprint : fingerprint;
+    coarse->direct      = stats.coarse_direct;
+    L.coarse            = std::move(coarse);
   }
 
   template <int dim, typename Operator>
@@ -150,7 +207,12 @@ namespace compliant::fast_solver
     auto &L = *levels;
     for (unsigned int level = L.operators.min_level(); level <= L.operators.max_level(); ++level)
       change(*L.operators[level]);
-    build_smoother_and_coarse_solver();
+    if (stats.coarse_reused) // the operators changed: the reused level no longer fits
+      {
+        stats.coarse_reused     = false;
+        coarse_rigid_body_modes = rigid_body_modes(*L.mapping, *L.dofs[0], communicator);
+      }
+    build_smoother_and_coarse_solver({});
     stats.setup_seconds += timer.wall_time();
   }
 
@@ -160,7 +222,8 @@ namespace compliant::fast_solver
   template <int dim, typename Operator>
   unsigned int PMultigridSolver<dim, Operator>::solve(const PETScWrappers::MPI::Vector &condensed_rhs,
                                             const AffineConstraints<double>  &constraints,
-                                            PETScWrappers::MPI::Vector        &solution)
+                                            PETScWrappers::MPI::Vector        &solution,
+                                            const WarmStart                   *start)
   {
     using VectorType        = typename Levels::VectorType;
     auto              &L    = *levels;
@@ -188,19 +251,35 @@ namespace compliant::fast_solver
     constraints.set_zero(rhs);
     stats.lifted_rhs_norm = rhs.l2_norm();
 
+    const unsigned int     coarse_iterations_before = L.coarse->solver->inner_iterations();
     mg::Matrix<VectorType> mg_matrix(L.operators);
-    Multigrid<VectorType>  multigrid(mg_matrix, *L.coarse_solver, *L.transfer, L.smoother,
+    Multigrid<VectorType>  multigrid(mg_matrix, *L.coarse->solver, *L.transfer, L.smoother,
                                      L.smoother, 0, top);
     PreconditionMG<dim, VectorType, typename Levels::TransferType> preconditioner(*L.dofs[top],
                                                                                  multigrid,
                                                                                  *L.transfer);
-    SolverControl        control(settings.max_iterations,
-                          settings.relative_tolerance * rhs.l2_norm(), false, false);
+    double tolerance = settings.relative_tolerance * rhs.l2_norm();
+    if (start)
+      {
+        const PetscScalar *values;
+        VecGetArrayRead(start->guess, &values);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          correction.local_element(i) = values[i];
+        VecRestoreArrayRead(start->guess, &values);
+        constraints.set_zero(correction); // the prescribed part is the lifting's
+        fine.vmult(product, correction);
+        product.sadd(-1., 1., rhs);
+        stats.initial_residual = product.l2_norm();
+        tolerance = std::max(start->reduction * stats.initial_residual, 1e-14 * stats.lifted_rhs_norm);
+      }
+    else
+      stats.initial_residual = stats.lifted_rhs_norm;
+    SolverControl        control(settings.max_iterations, tolerance, false, false);
     if (settings.coarse_tolerance > 0 && !stats.coarse_direct)
       SolverFlexibleCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);
     else
       SolverCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);
-    stats.coarse_iterations = L.coarse_solver->inner_iterations();
+    stats.coarse_iterations = L.coarse->solver->inner_iterations() - coarse_iterations_before;
 
     PetscScalar *values;
     VecGetArray(solution, &values);

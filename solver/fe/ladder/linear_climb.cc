@@ -17,6 +17,7 @@
 #include "quantities/out_of_plane_bound.h"
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 
@@ -87,7 +88,8 @@ namespace compliant
       {
         // The dual-weighted estimate stands in where the sequence cannot vouch for Richardson's.
         const auto dual = estimate_quantity_errors<dim>(context, rung_parameters, rung_quantities,
-                                                        model.problem->triangulation.all_reference_cells_are_hyper_cube());
+                                                        model.problem->triangulation.all_reference_cells_are_hyper_cube(),
+                                                        {}, model.problem.get());
         for (const auto &n : names)
           if (const auto found = dual.relative.find(n); found != dual.relative.end())
             {
@@ -183,7 +185,11 @@ namespace compliant
               break;
             }
         dealii::Timer rung_timer;
-        auto          model = solve_linear_static_model<dim>(context, *rung_parameters);
+        // Goal-oriented refinement solves a dual per target with the rung's own solver.
+        const std::function<void(LinearElasticProblem<dim> &)> keep_solver = [&](LinearElasticProblem<dim> &problem) {
+          problem.keep_solver_for_duals = target.goal_oriented && target.adaptive;
+        };
+        auto model = solve_linear_static_model<dim>(context, *rung_parameters, false, keep_solver);
         last_cells          = model.problem->triangulation.n_global_active_cells();
         if (model.stopped_for_check)
           return 0;

@@ -22,7 +22,8 @@ namespace compliant
       KSPDestroy(&ksp);
   }
 
-  void DirectFactorization::factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, const bool symmetric_matrix)
+  void DirectFactorization::factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, const bool symmetric_matrix,
+                                   const bool with_options)
   {
     if (ksp != nullptr)
       KSPDestroy(&ksp);
@@ -45,6 +46,8 @@ namespace compliant
         check(MatMumpsSetIcntl(factor, 13, 1), "MatMumpsSetIcntl(13)"); // inertia over all ranks
         check(MatMumpsSetIcntl(factor, 24, 1), "MatMumpsSetIcntl(24)"); // null pivots, which the inertia needs
       }
+    if (with_options)
+      check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
     check(KSPSetUp(ksp), "KSPSetUp (factorization)");
     PCFailedReason reason;
     check(PCGetFailedReason(pc, &reason), "PCGetFailedReason");
@@ -53,7 +56,7 @@ namespace compliant
                                                    matrix.get_mpi_communicator());
     if (failed != 0)
       throw std::runtime_error("the factorization failed (PETSc reason " + std::to_string(failed) +
-                               "): the tangent is singular");
+                               "): the matrix is singular");
   }
 
   void DirectFactorization::solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const

@@ -21,7 +21,8 @@ namespace compliant
 
     // Factors the matrix: LDL^T if symmetric (the inertia is then known), LU otherwise. The
     // matrix must outlive the solves. Throws std::runtime_error if PETSc fails.
-    void factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, bool symmetric);
+    // with_options: 'Linear solver/PETSc options' (inserted by the caller) apply to the solver.
+    void factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, bool symmetric, bool with_options = false);
     void solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const;
     // Negative eigenvalues of the factored matrix; only for a symmetric one.
     unsigned int negative_eigenvalues() const;
