@@ -49,12 +49,25 @@ namespace compliant
     Linearization linearize(const Vector &u, const unsigned int iteration) override
     {
       ghosted     = u;
+      bool settled = true;
+      if (p.contact)
+        {
+          // The active set at this state, from its contact forces (the unconstrained residual);
+          // the line search then measures residuals with it.
+          Timer contact_timer;
+          p.assemble(ghosted, target, &p.hanging_node_constraints, false, full);
+          const auto update = p.contact->update_active_set(ghosted, full, target);
+          settled           = update.changes == 0 && update.violation <= p.contact->tolerance;
+          homogeneous       = p.make_constraints(target, true, ghosted);
+          p.contact_seconds += contact_timer.wall_time();
+        }
       constraints = p.make_constraints(target, false, ghosted);
       matrix_free = p.matrix_free_tangent();
       Timer assembly_timer;
       p.assemble(ghosted, target, &constraints, !matrix_free, rhs, iteration > 0 ? &full : nullptr);
       p.tangent_assembly_seconds += assembly_timer.wall_time();
       Linearization result;
+      result.settled  = settled;
       result.residual = last_residual = rhs.l2_norm();
       if (std::getenv("COMPLIANT_DEBUG_NEWTON"))
         {
