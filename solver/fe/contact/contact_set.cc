@@ -40,8 +40,8 @@ namespace compliant
   ContactSet<dim>::ContactSet(std::vector<Obstacle<dim>> obstacles_in, const std::set<int> &excluded,
                               const DoFHandler<dim> &dofs, const Mapping<dim> &mapping,
                               const Quadrature<dim - 1> &face_quadrature, const IndexSet &owned,
-                              const IndexSet &relevant, const double thickness, const double stiffness,
-                              const double relative_tolerance, MPI_Comm communicator)
+                              const IndexSet &relevant, const double thickness, const double relative_tolerance,
+                              MPI_Comm communicator)
     : obstacles(std::move(obstacles_in))
     , communicator(communicator)
     , owned_dofs(owned)
@@ -119,9 +119,6 @@ namespace compliant
           Node n  = node;
           n.owned = owned.is_element(first);
           n.area  = ghosted_area(first);
-          // c turns a gap into a force of the contact's scale: E over the node's length h.
-          const double h = dim == 2 ? n.area / thickness : std::sqrt(n.area);
-          n.c            = h > 0 ? stiffness * n.area / h : stiffness * thickness;
           nodes.push_back(n);
         }
   }
@@ -155,7 +152,7 @@ namespace compliant
   template <int dim>
   typename ContactSet<dim>::Update ContactSet<dim>::update_active_set(const PETScWrappers::MPI::Vector &u,
                                                                      const PETScWrappers::MPI::Vector &residual,
-                                                                     const double load_factor)
+                                                                     const double load_factor, const bool release)
   {
     Update update;
     for (auto &node : nodes)
@@ -171,7 +168,9 @@ namespace compliant
               double lambda = 0;
               for (unsigned int d = 0; d < dim; ++d)
                 lambda -= residual(node.dofs[d]) * n[d];
-              now = lambda - node.c * gap > 0 ? node.active : -1;
+              if (lambda <= 0)
+                ++update.pulling;
+              now = lambda > 0 || !release ? node.active : -1;
             }
           else
             {
@@ -183,6 +182,7 @@ namespace compliant
           node.active      = now;
         }
     update.changes   = Utilities::MPI::sum(update.changes, communicator);
+    update.pulling   = Utilities::MPI::sum(update.pulling, communicator);
     update.violation = Utilities::MPI::max(update.violation, communicator);
     share_active_set();
     return update;

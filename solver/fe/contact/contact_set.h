@@ -4,9 +4,12 @@
 // obstacle by the linearised constraint n . du = -gap (one multi-point constraint per node, on its
 // component most aligned with n), so the active nodes slide freely along the surface. The set is
 // chosen again at every Newton iteration: a free node that penetrates becomes active, an active
-// node whose contact force lambda = -n . r (r = f_ext - f_int) would pull (lambda - c gap <= 0)
-// is freed. Newton has converged only when the set no longer changes and no node lies deeper than
-// the tolerance: the answer does not depend on a penalty stiffness (c only steers the iteration).
+// node whose contact force lambda = -n . r (r = f_ext - f_int) would pull (lambda <= 0) is freed.
+// (The semismooth form lambda - c gap > 0 with a stiffness-sized c freed nodes a curved obstacle
+// leaves a second-order gap under after a linearised step, and they came back every other
+// iteration; an active node's gap is closed by its constraint anyway.) Newton has converged only
+// when the set no longer changes and no node lies deeper than the tolerance: there is no penalty
+// stiffness for the answer to depend on.
 #pragma once
 
 #include <deal.II/base/point.h>
@@ -31,24 +34,27 @@ namespace compliant
   public:
     // Gathers the nodes of the obstacles' boundaries on this rank's cells (owned and ghost);
     // nodes on an `excluded` boundary (a rigid boundary: its nodes are already tied) are left
-    // out. area: the lumped boundary area of each node (times the thickness in 2D); stiffness:
-    // the largest Young's modulus, which scales c. tolerance: fraction of the part's size.
+    // out. thickness: of a 2D model, for the nodes' areas; tolerance: fraction of the part's size.
     // Collective.
     ContactSet(std::vector<Obstacle<dim>> obstacles, const std::set<int> &excluded,
                const dealii::DoFHandler<dim> &dofs, const dealii::Mapping<dim> &mapping,
                const dealii::Quadrature<dim - 1> &face_quadrature, const dealii::IndexSet &owned,
-               const dealii::IndexSet &relevant, double thickness, double stiffness, double tolerance,
+               const dealii::IndexSet &relevant, double thickness, double tolerance,
                MPI_Comm communicator);
 
     struct Update
     {
       unsigned int changes   = 0; // nodes that became active or free (all ranks)
+      unsigned int pulling   = 0; // active nodes whose contact force pulls (freed only if `release`)
       double       violation = 0; // deepest penetration, or largest gap of an active node
     };
     // Chooses the active set at state u (ghosted) from the residual r = f_ext - f_int (owned,
-    // unconstrained) at the load factor. Collective.
+    // unconstrained) at the load factor. A penetrating node is held at once; a held node that
+    // pulls is freed only with `release`: its force means something only near equilibrium (a
+    // node freed on the force of the state one step after it was held came back every other
+    // iteration). Collective.
     Update update_active_set(const dealii::PETScWrappers::MPI::Vector &u,
-                             const dealii::PETScWrappers::MPI::Vector &residual, double load_factor);
+                             const dealii::PETScWrappers::MPI::Vector &residual, double load_factor, bool release);
 
     // Adds the constraint of every active node on the correction du at state u:
     // n . du = -gap (homogeneous: = 0). Components already constrained are kept out; a node whose
@@ -87,7 +93,7 @@ namespace compliant
       std::array<dealii::types::global_dof_index, dim> dofs;
       dealii::Point<dim>                               reference;
       std::vector<bool>                                allowed; // per obstacle
-      double                                           area = 0, c = 0;
+      double                                           area = 0;
       bool                                             owned = false;
       int                                              active = -1; // obstacle index, or free
     };

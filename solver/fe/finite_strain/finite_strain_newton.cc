@@ -56,8 +56,11 @@ namespace compliant
           // the line search then measures residuals with it.
           Timer contact_timer;
           p.assemble(ghosted, target, &p.hanging_node_constraints, false, full);
-          const auto update = p.contact->update_active_set(ghosted, full, target);
-          settled           = update.changes == 0 && update.violation <= p.contact->tolerance;
+          const auto update = p.contact->update_active_set(ghosted, full, target, near_equilibrium);
+          settled = update.changes == 0 && update.pulling == 0 && update.violation <= p.contact->tolerance;
+          if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(p.communicator) == 0)
+            std::cout << "    contact: " << update.changes << " changes, " << update.pulling << " pulling, violation "
+                      << update.violation << std::endl;
           homogeneous       = p.make_constraints(target, true, ghosted);
           p.contact_seconds += contact_timer.wall_time();
         }
@@ -79,6 +82,8 @@ namespace compliant
       // Force scale of the convergence test: internal forces including the reactions.
       if (iteration > 0)
         result.scale = full.l2_norm();
+      // Contact forces are trusted to free a node once Newton is near equilibrium for the set.
+      near_equilibrium = iteration > 0 && result.residual <= release_residual * result.scale;
       return result;
     }
 
@@ -155,6 +160,11 @@ namespace compliant
     bool                            iterative = false, matrix_free = false;
     std::vector<Vector>             modes;
     double                          last_residual = 0;
+    bool                            near_equilibrium = false;
+    // The residual, relative to the force scale, below which the state's contact forces decide
+    // which nodes are freed (quadratic convergence: the next state is then at equilibrium to
+    // about its square).
+    static constexpr double release_residual = 1e-2;
   };
 
   template <int dim>

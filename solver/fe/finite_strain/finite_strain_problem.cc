@@ -221,11 +221,8 @@ namespace compliant
     std::set<int> rigid_ids; // their nodes are tied to the rigid motion already
     for (const auto &rigid : rigid_boundaries)
       rigid_ids.insert(rigid.load.boundary_id);
-    double stiffness = 0;
-    for (const auto &[id, material] : materials)
-      stiffness = std::max(stiffness, material.youngs_modulus);
     contact = std::make_unique<ContactSet<dim>>(std::move(obstacles), rigid_ids, dof_handler, *mapping, *face_quadrature,
-                                                locally_owned_dofs, locally_relevant_dofs, thickness, stiffness,
+                                                locally_owned_dofs, locally_relevant_dofs, thickness,
                                                 settings.contact.tolerance, communicator);
   }
 
