@@ -3,7 +3,7 @@
 that do not come from the contact code: Hertz's closed form, the run without the obstacle, the
 equilibrium of the reactions, and the same run on other rank counts.
 
-    contact_checks.py hertz | ranks | motion | stop
+    contact_checks.py hertz | ranks | motion | stop | stop_3d
 """
 import csv
 import math
@@ -20,6 +20,7 @@ from case_checks import check, finish, unknown_mode  # noqa: E402
 
 HERTZ = os.path.join(cases, "contact", "hertz_cylinder.prm")
 STOP = os.path.join(cases, "contact", "flexure_hinge_stop.prm")
+STOP_3D = os.path.join(cases, "contact", "cantilever_3d_stop.prm")
 
 
 def run_with_files(case, sets=(), np=2):
@@ -164,6 +165,28 @@ elif mode == "stop":
     check(abs(moment) <= 1e-6 * 1.3, "moments: base %.6g + applied 1.3 + pin %.6g = %.2g"
           % (q["reaction_moment_base_z"], q["contact_moment_pin_z"], moment))
     no_penetration(q, nodes, "hinge on its stop")
+elif mode == "stop_3d":
+    # 3D: a cantilever pushed onto a cylinder across it, then onto a sphere under its middle line:
+    # the supports and the obstacle in equilibrium (no load but the prescribed end), no node deeper
+    # than the tolerance, and the cylinder's answer the same on 1 and 2 ranks.
+    runs = [("cylinder, 2 ranks", [], 2), ("cylinder, 1 rank", [], 1),
+            ("sphere, 2 ranks", ["Contact/Obstacles=stop: sphere, center=60 -56 0, radius=50"], 2)]
+    results = {}
+    for name, sets, np in runs:
+        q, curve, nodes = run_with_files(STOP_3D, sets, np=np)
+        results[name] = q
+        F = math.sqrt(sum(q["contact_force_stop_" + a] ** 2 for a in "xyz"))
+        print("%s: contact force %s, %d held nodes, Newton per step %s" % (
+            name, ["%.6g" % q["contact_force_stop_" + a] for a in "xyz"], q["contact_active_nodes"],
+            [r["newton_iterations"] for r in curve]))
+        check(q["contact_active_nodes"] > 0 and F > 0, "%s: the beam rests on the stop" % name)
+        for a in "xyz":
+            residual = q["reaction_force_left_" + a] + q["reaction_force_right_" + a] + q["contact_force_stop_" + a]
+            check(abs(residual) <= 1e-8 * F, "%s: forces in %s balance (%.2g)" % (name, a, residual))
+        no_penetration(q, nodes, name)
+    a, b = results["cylinder, 2 ranks"], results["cylinder, 1 rank"]
+    for key in ("contact_force_stop_x", "contact_force_stop_y", "contact_active_nodes"):
+        check(abs(a[key] - b[key]) <= 1e-9 * abs(b[key]), "%s on 2 ranks %.12g = on 1 rank %.12g" % (key, a[key], b[key]))
 else:
-    unknown_mode(mode, ("hertz", "ranks", "motion", "stop"))
+    unknown_mode(mode, ("hertz", "ranks", "motion", "stop", "stop_3d"))
 finish()
