@@ -16,7 +16,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 cases = os.path.join(here, "..", "..", "cases")
 sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
 from study import run_case  # noqa: E402
-from case_checks import check, finish, unknown_mode  # noqa: E402
+from case_checks import check, finish, readme_figure, unknown_mode  # noqa: E402
 
 HERTZ = os.path.join(cases, "contact", "hertz_cylinder.prm")
 STOP = os.path.join(cases, "contact", "flexure_hinge_stop.prm")
@@ -101,6 +101,10 @@ if mode == "hertz":
         no_penetration(q, nodes, "nb = %d" % nb)
     # The bar is 2 % at a converged mesh: nb = 40 must be within it and nb = 20 -> 40 must
     # have moved each figure by less than 1 % (converged to that level).
+    # The README's figures (Contact), to 3 units of their last digit.
+    for nb, figures in ((40, ("-0.26", "+0.23", "+0.32")), (20, ("-0.30", "+0.24", "+0.31"))):
+        for k, name in enumerate(("b", "p0 fitted", "p at x = 0")):
+            readme_figure(results[nb][k], figures[k], "nb = %d: %s against Hertz, %%" % (nb, name), scale=100)
     for k, name in enumerate(("half-width b", "peak pressure p0 (fitted)", "pressure at x = 0")):
         check(abs(results[40][k]) < 0.02, "%s within 2 %% of Hertz at nb = 40 (%+.2f %%)" % (name, 100 * results[40][k]))
         check(abs(results[40][k] - results[20][k]) < 0.01, "%s moves %.2f %% from nb = 20 to 40 (< 1 %%)"
@@ -124,7 +128,7 @@ elif mode == "motion":
                                               "Contact/Obstacles=ground: plane, point=0 0, normal=0 1, motion=0 0.003"])
     a, b = pushed["contact_force_ground_y"], lifted["contact_force_ground_y"]
     check(abs(a - b) <= 1e-7 * a, "moving plane: force %.10g, pushed top: %.10g" % (b, a))
-    check(lifted["contact_active_nodes"] == pushed["contact_active_nodes"], "the same held nodes (%d)"
+    check(lifted["contact_active_nodes"] == pushed["contact_active_nodes"] == 22, "the same held nodes (%d; README: 22)"
           % lifted["contact_active_nodes"])
     no_penetration(lifted, nodes, "moving plane")
 elif mode == "stop":
@@ -150,6 +154,10 @@ elif mode == "stop":
     # 3. The kink: past contact the moment turns the link far less than the free hinge's.
     last, free_last = float(curve[-1]["link_angle_deg"]), float(free[-1]["link_angle_deg"])
     check(free_last > 18 and last < 12, "the pin stops the link at %.2f degrees (free: %.2f)" % (last, free_last))
+    readme_figure(last, "10.50", "link angle at the full moment on the pin (README)")
+    readme_figure(free_last, "21.05", "link angle at the full moment, free hinge (README)")
+    readme_figure(onset[0], "9.47", "last angle before contact (README)")
+    readme_figure(onset[1], "10.21", "first angle with contact (README)")
     slope_before = (onset[1] - float(curve[0]["link_angle_deg"])) / (float(curve[first]["load_factor"]) - float(curve[0]["load_factor"]))
     slope_after = (last - float(curve[-3]["link_angle_deg"])) / (float(curve[-1]["load_factor"]) - float(curve[-3]["load_factor"]))
     check(slope_after < 0.3 * slope_before, "rotation per moment after contact %.3g, before %.3g: the kink"

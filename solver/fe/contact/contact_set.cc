@@ -152,7 +152,8 @@ namespace compliant
   template <int dim>
   typename ContactSet<dim>::Update ContactSet<dim>::update_active_set(const PETScWrappers::MPI::Vector &u,
                                                                      const PETScWrappers::MPI::Vector &residual,
-                                                                     const double load_factor, const bool release)
+                                                                     const double load_factor, const bool release,
+                                                                     const double force_tolerance)
   {
     Update update;
     for (auto &node : nodes)
@@ -168,14 +169,16 @@ namespace compliant
               double lambda = 0;
               for (unsigned int d = 0; d < dim; ++d)
                 lambda -= residual(node.dofs[d]) * n[d];
-              if (lambda <= 0)
-                ++update.pulling;
-              now = lambda > 0 || !release ? node.active : -1;
+              // A force within Newton's tolerance of zero is no pull (a leaf lying on a former
+              // without pressing on it): freeing such nodes on round-off made the set cycle.
+              const bool pulls = lambda < -force_tolerance;
+              update.pulling += pulls;
+              now = pulls && release ? -1 : node.active;
             }
           else
             {
               const unsigned int o = nearest(node, x, load_factor, gap, n);
-              now                  = gap < 0 ? static_cast<int>(o) : -1;
+              now                  = gap < -tolerance ? static_cast<int>(o) : -1;
             }
           update.changes += now != node.active;
           update.violation = std::max(update.violation, now >= 0 ? std::abs(gap) : -gap);

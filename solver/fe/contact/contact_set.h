@@ -52,9 +52,11 @@ namespace compliant
     // unconstrained) at the load factor. A penetrating node is held at once; a held node that
     // pulls is freed only with `release`: its force means something only near equilibrium (a
     // node freed on the force of the state one step after it was held came back every other
-    // iteration). Collective.
+    // iteration), and only if it pulls by more than force_tolerance (Newton's residual
+    // tolerance); a free node is held when it is deeper than the tolerance. Collective.
     Update update_active_set(const dealii::PETScWrappers::MPI::Vector &u,
-                             const dealii::PETScWrappers::MPI::Vector &residual, double load_factor, bool release);
+                             const dealii::PETScWrappers::MPI::Vector &residual, double load_factor, bool release,
+                             double force_tolerance);
 
     // Adds the constraint of every active node on the correction du at state u:
     // n . du = -gap (homogeneous: = 0). Components already constrained are kept out; a node whose

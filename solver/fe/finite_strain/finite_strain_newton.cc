@@ -56,7 +56,8 @@ namespace compliant
           // the line search then measures residuals with it.
           Timer contact_timer;
           p.assemble(ghosted, target, &p.hanging_node_constraints, false, full);
-          const auto update = p.contact->update_active_set(ghosted, full, target, near_equilibrium);
+          const double force_tolerance = p.settings.residual_tolerance * full.l2_norm();
+          const auto update = p.contact->update_active_set(ghosted, full, target, near_equilibrium, force_tolerance);
           settled = update.changes == 0 && update.pulling == 0 && update.violation <= p.contact->tolerance;
           if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(p.communicator) == 0)
             std::cout << "    contact: " << update.changes << " changes, " << update.pulling << " pulling, violation "
