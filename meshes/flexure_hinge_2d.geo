@@ -1,6 +1,7 @@
 // A flexure hinge between two thick links, 2D. The flexure (length l, thickness t) runs along x
 // from 0 to l, centred on y = 0; each link is Ll long and T thick.
-// Boundaries: base (left end of the left link), drive (right end of the right link).
+// Boundaries: base (left end of the left link), drive (right end of the right link), drive_top
+// (the upper face of the right link: where a travel stop meets it).
 // Body: body. Cells: quadrilaterals, structured block by block.
 DefineConstant[ l = {10, Name "Parameters/l", Help "flexure length"} ];
 DefineConstant[ t = {1, Name "Parameters/t", Help "flexure thickness (bending depth)"} ];
@@ -42,10 +43,12 @@ For i In {0:2}
       Transfinite Surface{s}; Recombine Surface{s};
       If (i == 0) base_lines[] += {100 * s + 4}; EndIf
       If (i == 2) drive_lines[] += {100 * s + 2}; EndIf
+      If (i == 2 && j == 2) drive_top_lines[] += {100 * s + 3}; EndIf
     EndIf
   EndFor
 EndFor
 Coherence;
 Physical Curve("base") = {base_lines[]};
 Physical Curve("drive") = {drive_lines[]};
+Physical Curve("drive_top") = {drive_top_lines[]};
 Physical Surface("body") = {1:s};

@@ -10,6 +10,7 @@
 #include <deal.II/base/utilities.h>
 
 #include "constraints/extra_constraints.h"
+#include "contact/contact_obstacle.h"
 #include "finite_strain/finite_strain_load_path.h"
 #include "finite_strain/finite_strain_problem.h"
 #include "nonlinear/load_stepping.h"
@@ -73,6 +74,7 @@ namespace compliant
                         "Newton converges when the residual is below this fraction of the "
                         "internal force norm.");
       prm.leave_subsection();
+      declare_contact_parameters(prm);
     }
 
     void report_critical_points(const std::vector<CriticalPoint> &points, const bool root)
@@ -128,14 +130,43 @@ namespace compliant
       return {per_step, path};
     }
 
-    void print_step(const unsigned int number, const double load_factor, const NewtonReport &report)
+    void print_step(const unsigned int number, const double load_factor, const NewtonReport &report,
+                    const Quantities &quantities)
     {
       std::cout << "step " << std::setw(3) << number << "  load factor " << std::setw(10) << std::setprecision(6)
                 << load_factor << "  Newton " << std::setw(2) << report.iterations << "  residual "
                 << std::scientific << std::setprecision(2) << report.residual << std::defaultfloat;
       if (report.line_search_cuts)
         std::cout << "  line search cuts " << report.line_search_cuts;
+      if (const auto active = quantities.find("contact_active_nodes"); active != quantities.end())
+        std::cout << "  contact nodes " << active->second;
       std::cout << std::endl;
+    }
+
+    // Contact forces and moments per obstacle, the active nodes and the deepest penetration, from
+    // the residual at the converged state (the obstacles' forces are what it leaves on the nodes).
+    template <int dim>
+    void add_contact_quantities(const FiniteStrainProblem<dim> &problem, Quantities &q)
+    {
+      if (!problem.contact)
+        return;
+      auto residual = problem.reaction_forces();
+      residual *= -1; // f_ext - f_int
+      const auto  result = problem.contact->result(problem.solution, residual, problem.load_factor);
+      const char *axes[] = {"x", "y", "z"};
+      for (unsigned int o = 0; o < result.obstacles.size(); ++o)
+        {
+          const std::string name = problem.contact->obstacles[o].name;
+          const auto       &r    = result.obstacles[o];
+          for (unsigned int d = 0; d < dim; ++d)
+            q["contact_force_" + name + "_" + axes[d]] = r.force[d];
+          for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+            q["contact_moment_" + name + "_" + axes[d]] = r.moment[d];
+          q["contact_nodes_" + name] = r.nodes;
+        }
+      q["contact_active_nodes"]          = result.active_nodes;
+      q["contact_max_penetration"]       = result.max_penetration;
+      q["contact_penetration_tolerance"] = problem.contact->tolerance;
     }
 
     struct PathOutcome
@@ -224,6 +255,8 @@ namespace compliant
         }
       q["time_tangent_assembly"] = problem.tangent_assembly_seconds;
       q["time_linear_solves"]    = problem.linear_solve_seconds;
+      if (problem.contact)
+        q["time_contact_active_set"] = problem.contact_seconds;
       q["linear_solves"]         = problem.total_linear_solves;
       if (problem.preconditioner_setup_seconds > 0)
         q["time_preconditioner_setup"] = problem.preconditioner_setup_seconds;
@@ -240,6 +273,7 @@ namespace compliant
                        "are held by linear static, linear buckling, modal and linkage analyses, not at finite "
                        "strain (nonlinear static, buckling about a finite-strain state)");
     PathSettings s;
+    s.finite_strain.contact = read_contact_settings(prm);
     prm.enter_subsection("Finite strain");
     s.finite_strain.law                   = prm.get("Law");
     s.finite_strain.mooney_rivlin_ratio   = prm.get_double("Mooney-Rivlin ratio");
@@ -301,6 +335,9 @@ namespace compliant
           validate_quantity_requests(*problem);
           if (settings.arc_length)
             problem->require_load_driven();
+          if (settings.arc_length && problem->contact)
+            throw std::invalid_argument("Contact/Obstacles: contact is followed by load steps, not yet by "
+                                        "Finite strain/Path = arc length");
         }
       catch (const std::invalid_argument &e)
         {
@@ -340,6 +377,7 @@ namespace compliant
     const auto record = [&](const unsigned int number, const double load_factor, const NewtonReport &report,
                             const std::vector<std::pair<std::string, double>> &path_columns) {
       quantities = compute_quantities(problem);
+      add_contact_quantities(problem, quantities);
       // Derived quantities per step too, so curves can hold e.g. a link angle.
       try
         {
@@ -350,7 +388,7 @@ namespace compliant
           throw InputError("case file '" + p.case_file + "': " + e.what());
         }
       if (root)
-        print_step(number, load_factor, report);
+        print_step(number, load_factor, report, quantities);
       curve.add(number, load_factor, report.iterations, path_columns, quantities);
     };
     const PathOutcome outcome =
@@ -364,6 +402,12 @@ namespace compliant
         failure = message.str();
       }
     curve.finish();
+    if (problem.contact)
+      {
+        auto residual = problem.reaction_forces();
+        residual *= -1;
+        problem.contact->write_csv(p.output_directory + "/contact.csv", problem.solution, residual, problem.load_factor);
+      }
 
     RunSummary summary = start_summary(context, problem.triangulation.all_reference_cells_are_hyper_cube());
     summary.settings.insert({"law", law.law});

@@ -10,6 +10,7 @@
 #include "analyses/analysis.h"
 #include "app/analysis_list.h"
 #include "app/point_batch.h"
+#include "contact/contact_obstacle.h"
 #include "materials/material.h"
 #include "input/case_file.h"
 #include "input/case_geometry.h"
@@ -105,6 +106,9 @@ namespace
       }
     if (p.case_file.empty())
       throw InputError("no case file given (try --help)");
+    if (p.analysis != "nonlinear static" && !read_contact_settings(prm).empty())
+      throw InputError("case file '" + p.case_file + "', Contact/Obstacles: contact is solved by nonlinear static "
+                       "analyses, not by a " + p.analysis + " analysis");
     check_output_directory(p, comm);
     const MeshedGeometry geometry = mesh_case_geometry(p, comm);
     // Fault injection for the rank-failure test: one rank throws, the others go on.

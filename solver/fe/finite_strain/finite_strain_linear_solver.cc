@@ -45,7 +45,7 @@ namespace compliant
     const bool wanted = method == SolverMethod::matrix_free ||
                         (method == SolverMethod::automatic && dim == 3 && dof_handler.n_dofs() >= auto_matrix_free_dofs);
     return wanted && !iterative_failed && !mixed && follower_pressures.empty() &&
-           rigid_boundaries.empty() && fe->degree >= 2;
+           rigid_boundaries.empty() && !contact && fe->degree >= 2;
   }
 
   template <int dim>
@@ -61,6 +61,8 @@ namespace compliant
       why = "a follower pressure makes the tangent unsymmetric";
     else if (!rigid_boundaries.empty())
       why = "a rigid boundary ties its nodes together (the multigrid levels cannot)";
+    else if (contact)
+      why = "contact constraints change with the active set (the multigrid levels do not hold them)";
     else if (fe->degree < 2 && method != SolverMethod::cg_amg)
       why = "degree 1 has no p-multigrid levels";
     else if (method == SolverMethod::automatic)

@@ -49,12 +49,29 @@ namespace compliant
     Linearization linearize(const Vector &u, const unsigned int iteration) override
     {
       ghosted     = u;
+      bool settled = true;
+      if (p.contact)
+        {
+          // The active set at this state, from its contact forces (the unconstrained residual);
+          // the line search then measures residuals with it.
+          Timer contact_timer;
+          p.assemble(ghosted, target, &p.hanging_node_constraints, false, full);
+          const double force_tolerance = p.settings.residual_tolerance * full.l2_norm();
+          const auto update = p.contact->update_active_set(ghosted, full, target, near_equilibrium, force_tolerance);
+          settled = update.changes == 0 && update.pulling == 0 && update.violation <= p.contact->tolerance;
+          if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(p.communicator) == 0)
+            std::cout << "    contact: " << update.changes << " changes, " << update.pulling << " pulling, violation "
+                      << update.violation << std::endl;
+          homogeneous       = p.make_constraints(target, true, ghosted);
+          p.contact_seconds += contact_timer.wall_time();
+        }
       constraints = p.make_constraints(target, false, ghosted);
       matrix_free = p.matrix_free_tangent();
       Timer assembly_timer;
       p.assemble(ghosted, target, &constraints, !matrix_free, rhs, iteration > 0 ? &full : nullptr);
       p.tangent_assembly_seconds += assembly_timer.wall_time();
       Linearization result;
+      result.settled  = settled;
       result.residual = last_residual = rhs.l2_norm();
       if (std::getenv("COMPLIANT_DEBUG_NEWTON"))
         {
@@ -66,6 +83,8 @@ namespace compliant
       // Force scale of the convergence test: internal forces including the reactions.
       if (iteration > 0)
         result.scale = full.l2_norm();
+      // Contact forces are trusted to free a node once Newton is near equilibrium for the set.
+      near_equilibrium = iteration > 0 && result.residual <= release_residual * result.scale;
       return result;
     }
 
@@ -142,6 +161,11 @@ namespace compliant
     bool                            iterative = false, matrix_free = false;
     std::vector<Vector>             modes;
     double                          last_residual = 0;
+    bool                            near_equilibrium = false;
+    // The residual, relative to the force scale, below which the state's contact forces decide
+    // which nodes are freed (quadratic convergence: the next state is then at equilibrium to
+    // about its square).
+    static constexpr double release_residual = 1e-2;
   };
 
   template <int dim>

@@ -26,6 +26,7 @@
 #include "mesh/mesh_reader.h"
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -118,6 +119,7 @@ namespace compliant
     for (const auto &load : boundary_conditions.rigid)
       rigid_boundaries.emplace_back(load, dof_handler, *mapping, hanging_node_constraints, communicator);
 
+    set_up_contact();
     const PETScWrappers::MPI::Vector zero(locally_owned_dofs, locally_relevant_dofs, communicator);
     const auto constraints = make_constraints(0, true, zero, true); // refuses supported rigid nodes
     reinit_matrix(tangent, dof_handler, constraints, rigid_boundaries, locally_owned_dofs, locally_relevant_dofs,
@@ -202,8 +204,26 @@ namespace compliant
     for (const auto &line : constraints.get_lines())
       if (line.entries.empty())
         constraints.set_inhomogeneity(line.index, homogeneous ? 0. : line.inhomogeneity - u[line.index]);
+    // Contact lines are on the correction already (n . du = -gap), after the supports they defer to.
+    if (contact)
+      contact->add_constraints(constraints, u, lambda, homogeneous || for_sparsity);
     constraints.close();
     return constraints;
+  }
+
+  template <int dim>
+  void FiniteStrainProblem<dim>::set_up_contact()
+  {
+    contact.reset();
+    if (settings.contact.empty() && trim(settings.contact.boundaries).empty())
+      return;
+    auto obstacles = parse_obstacles<dim>(settings.contact, geometry.boundary_ids, parameters.geometry_parameters);
+    std::set<int> rigid_ids; // their nodes are tied to the rigid motion already
+    for (const auto &rigid : rigid_boundaries)
+      rigid_ids.insert(rigid.load.boundary_id);
+    contact = std::make_unique<ContactSet<dim>>(std::move(obstacles), rigid_ids, dof_handler, *mapping, *face_quadrature,
+                                                locally_owned_dofs, locally_relevant_dofs, thickness,
+                                                settings.contact.tolerance, communicator);
   }
 
   template <int dim>

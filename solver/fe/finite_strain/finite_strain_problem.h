@@ -15,6 +15,7 @@
 #include <deal.II/lac/petsc_vector.h>
 
 #include "constraints/rigid_boundary.h"
+#include "contact/contact_set.h"
 #include "discretization/discretization.h"
 #include "finite_strain/hyperelastic_law.h"
 #include "nonlinear/arc_length.h"
@@ -44,6 +45,7 @@ namespace compliant
     unsigned    max_newton_iterations = 25;
     double      residual_tolerance = 1e-9; // relative to the internal force scale
     unsigned    line_search_steps  = 5;
+    ContactSettings contact; // subsection Contact: rigid obstacles
   };
 
   template <int dim>
@@ -141,8 +143,12 @@ namespace compliant
     dealii::PETScWrappers::MPI::Vector solution; // ghosted, converged state
     // Boundary conditions/Rigid; linearised at the state of the latest make_constraints.
     mutable std::vector<RigidBoundary<dim>> rigid_boundaries;
+    // Contact with rigid obstacles (Contact/Obstacles); null without obstacles. Its active set is
+    // chosen inside Newton (FiniteStrainNewtonSystem::linearize) and held by make_constraints.
+    std::unique_ptr<ContactSet<dim>>   contact;
     unsigned int                       total_linear_solves = 0;
     double                             tangent_assembly_seconds = 0, linear_solve_seconds = 0;
+    double                             contact_seconds = 0; // active-set updates (a residual each)
     // Of linear_solve_seconds: the matrix-free tangent's state on every level, diagonals,
     // eigenvalue estimates and the degree-1 factorization, once per Newton step.
     double                             preconditioner_setup_seconds = 0;
@@ -168,6 +174,8 @@ namespace compliant
     dealii::AffineConstraints<double> make_constraints(double lambda, bool homogeneous,
                                                        const dealii::PETScWrappers::MPI::Vector &u,
                                                        bool for_sparsity = false) const;
+    // Contact/Obstacles against the mesh (std::invalid_argument naming the entry).
+    void set_up_contact();
     // u + alpha du, with every rigid boundary put on its exact rigid motion.
     void add_correction(dealii::PETScWrappers::MPI::Vector &u, double alpha,
                         const dealii::PETScWrappers::MPI::Vector &du) const;

@@ -60,6 +60,9 @@ namespace compliant
     {
       double residual = 0; // norm of the constrained residual at the state
       double scale    = 0; // the force scale convergence is measured against (iteration > 0)
+      // The problem's own conditions of convergence hold at the state (contact: the active set
+      // did not change and no node penetrates); a small residual alone is not convergence.
+      bool settled = true;
     };
     // Residual (and whatever the correction needs: a tangent, constraints) at state u. The first
     // iteration may impose prescribed values; its scale is not used.
@@ -93,7 +96,7 @@ namespace compliant
         if (it > 0)
           {
             report.residual_scale = std::max(linearization.scale, 1e-300);
-            if (r <= settings.residual_tolerance * report.residual_scale)
+            if (r <= settings.residual_tolerance * report.residual_scale && linearization.settled)
               {
                 report.iterations = it;
                 return report;
@@ -124,7 +127,8 @@ namespace compliant
             ++report.line_search_cuts;
           }
         system.add_correction(u, alpha, du);
-        if (it > 0 && alpha * system.norm(du) <= settings.correction_tolerance * system.norm(u))
+        if (it > 0 && linearization.settled &&
+            alpha * system.norm(du) <= settings.correction_tolerance * system.norm(u))
           {
             report.iterations = it + 1;
             return report;

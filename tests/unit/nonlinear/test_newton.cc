@@ -80,3 +80,25 @@ TEST(Newton, StopsWhenAsked)
   EXPECT_THROW(newton_solve(system, u, du, NewtonSettings{}), RunInterrupted);
   EXPECT_EQ(system.residuals.size(), 1u);
 }
+
+// A problem whose own conditions are not yet met (contact: the active set still changes) is not
+// converged however small its residual: Newton goes on until the problem says it is settled.
+TEST(Newton, WaitsUntilTheProblemIsSettled)
+{
+  struct Unsettled : ss::System
+  {
+    using ss::System::System;
+    unsigned int calls = 0;
+    Linearization linearize(const double &u, unsigned int it) override
+    {
+      auto result    = ss::System::linearize(u, it);
+      result.settled = ++calls > 6; // long after the residual has reached round-off
+      return result;
+    }
+  };
+  Unsettled      system(0.15);
+  double         u = 0, du = 0;
+  const NewtonReport report = newton_solve(system, u, du, NewtonSettings{});
+  EXPECT_EQ(report.iterations, 6u);
+  EXPECT_NEAR(ss::force(u), 0.15, 1e-12);
+}

@@ -1,0 +1,328 @@
+#include "contact/contact_set.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+
+namespace compliant
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // The part's size: the diagonal of the bounding box of all vertices.
+    template <int dim>
+    double part_size(const Triangulation<dim> &triangulation, MPI_Comm communicator)
+    {
+      std::vector<double> low(dim, std::numeric_limits<double>::max()), high(dim, -std::numeric_limits<double>::max());
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto v : cell->vertex_indices())
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                low[d]  = std::min(low[d], cell->vertex(v)[d]);
+                high[d] = std::max(high[d], cell->vertex(v)[d]);
+              }
+      double squared = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        squared += std::pow(Utilities::MPI::max(high[d], communicator) - Utilities::MPI::min(low[d], communicator), 2);
+      return std::sqrt(squared);
+    }
+  } // namespace
+
+  template <int dim>
+  ContactSet<dim>::ContactSet(std::vector<Obstacle<dim>> obstacles_in, const std::set<int> &excluded,
+                              const DoFHandler<dim> &dofs, const Mapping<dim> &mapping,
+                              const Quadrature<dim - 1> &face_quadrature, const IndexSet &owned,
+                              const IndexSet &relevant, const double thickness, const double relative_tolerance,
+                              MPI_Comm communicator)
+    : obstacles(std::move(obstacles_in))
+    , communicator(communicator)
+    , owned_dofs(owned)
+    , relevant_dofs(relevant)
+  {
+    tolerance = relative_tolerance * part_size(dofs.get_triangulation(), communicator);
+    const auto           &fe   = dofs.get_fe();
+    const auto           &base = fe.base_element(0); // the displacement's FE_Q
+    const Quadrature<dim> support(base.get_unit_support_points());
+    FEValues<dim>         fe_values(mapping, fe, support, update_quadrature_points);
+    FEFaceValues<dim>     face_values(mapping, fe, face_quadrature, update_values | update_JxW_values);
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell()), face_dofs;
+    std::map<types::global_dof_index, Node> by_dof; // by the node's x DoF
+    std::set<types::global_dof_index>       left_out;
+    PETScWrappers::MPI::Vector              area(owned, communicator);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned() || cell->is_ghost())
+        for (const auto f : cell->face_indices())
+          {
+            if (!cell->face(f)->at_boundary())
+              continue;
+            const int          id = cell->face(f)->boundary_id();
+            std::vector<bool>  allowed(obstacles.size());
+            for (unsigned int o = 0; o < obstacles.size(); ++o)
+              allowed[o] = obstacles[o].boundary_ids.count(id) > 0;
+            const bool is_excluded = excluded.count(id) > 0;
+            if (!is_excluded && std::find(allowed.begin(), allowed.end(), true) == allowed.end())
+              continue;
+            fe_values.reinit(cell);
+            cell->get_dof_indices(cell_dofs);
+            face_dofs.resize(fe.n_dofs_per_face(f));
+            cell->face(f)->get_dof_indices(face_dofs);
+            std::map<unsigned int, Node> on_face; // by base support point
+            for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+              {
+                const auto [base_and_copy, base_index] = fe.system_to_base_index(i);
+                if (base_and_copy.first != 0 ||
+                    std::find(face_dofs.begin(), face_dofs.end(), cell_dofs[i]) == face_dofs.end())
+                  continue;
+                Node &node                     = on_face[base_index];
+                node.dofs[base_and_copy.second] = cell_dofs[i];
+                node.reference                  = fe_values.quadrature_point(base_index);
+                node.allowed                    = allowed;
+              }
+            for (const auto &[index, node] : on_face)
+              {
+                if (is_excluded)
+                  left_out.insert(node.dofs[0]);
+                auto [it, inserted] = by_dof.emplace(node.dofs[0], node);
+                if (!inserted)
+                  for (unsigned int o = 0; o < obstacles.size(); ++o)
+                    it->second.allowed[o] = it->second.allowed[o] || node.allowed[o];
+              }
+            // The lumped area of each node: the integral of its shape function over the face.
+            if (cell->is_locally_owned() && !is_excluded)
+              {
+                face_values.reinit(cell, f);
+                for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+                  if (fe.system_to_base_index(i).first == std::make_pair(0u, 0u))
+                    {
+                      double integral = 0;
+                      for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                        integral += face_values.shape_value_component(i, q, 0) * face_values.JxW(q);
+                      if (integral != 0)
+                        area(cell_dofs[i]) += thickness * integral;
+                    }
+              }
+          }
+    area.compress(VectorOperation::add);
+    PETScWrappers::MPI::Vector ghosted_area(owned, relevant, communicator);
+    ghosted_area = area;
+    for (const auto &[first, node] : by_dof)
+      if (left_out.count(first) == 0)
+        {
+          Node n  = node;
+          n.owned = owned.is_element(first);
+          n.area  = ghosted_area(first);
+          nodes.push_back(n);
+        }
+  }
+
+  template <int dim>
+  Point<dim> ContactSet<dim>::position(const Node &node, const PETScWrappers::MPI::Vector &u) const
+  {
+    Point<dim> x = node.reference;
+    for (unsigned int d = 0; d < dim; ++d)
+      x[d] += u(node.dofs[d]);
+    return x;
+  }
+
+  template <int dim>
+  unsigned int ContactSet<dim>::nearest(const Node &node, const Point<dim> &x, const double load_factor, double &gap,
+                                        Tensor<1, dim> &normal) const
+  {
+    unsigned int best = 0;
+    gap               = std::numeric_limits<double>::max();
+    for (unsigned int o = 0; o < obstacles.size(); ++o)
+      if (node.allowed[o])
+        {
+          Tensor<1, dim> n;
+          const double   g = obstacles[o].gap(x, load_factor, n);
+          if (g < gap)
+            gap = g, normal = n, best = o;
+        }
+    return best;
+  }
+
+  template <int dim>
+  typename ContactSet<dim>::Update ContactSet<dim>::update_active_set(const PETScWrappers::MPI::Vector &u,
+                                                                     const PETScWrappers::MPI::Vector &residual,
+                                                                     const double load_factor, const bool release,
+                                                                     const double force_tolerance)
+  {
+    Update update;
+    for (auto &node : nodes)
+      if (node.owned)
+        {
+          const Point<dim> x = position(node, u);
+          Tensor<1, dim>   n;
+          double           gap;
+          int              now = -1;
+          if (node.active >= 0)
+            {
+              gap           = obstacles[node.active].gap(x, load_factor, n);
+              double lambda = 0;
+              for (unsigned int d = 0; d < dim; ++d)
+                lambda -= residual(node.dofs[d]) * n[d];
+              // A force within Newton's tolerance of zero is no pull (a leaf lying on a former
+              // without pressing on it): freeing such nodes on round-off made the set cycle.
+              const bool pulls = lambda < -force_tolerance;
+              update.pulling += pulls;
+              now = pulls && release ? -1 : node.active;
+            }
+          else
+            {
+              const unsigned int o = nearest(node, x, load_factor, gap, n);
+              now                  = gap < -tolerance ? static_cast<int>(o) : -1;
+            }
+          update.changes += now != node.active;
+          update.violation = std::max(update.violation, now >= 0 ? std::abs(gap) : -gap);
+          node.active      = now;
+        }
+    update.changes   = Utilities::MPI::sum(update.changes, communicator);
+    update.pulling   = Utilities::MPI::sum(update.pulling, communicator);
+    update.violation = Utilities::MPI::max(update.violation, communicator);
+    share_active_set();
+    return update;
+  }
+
+  template <int dim>
+  void ContactSet<dim>::share_active_set()
+  {
+    PETScWrappers::MPI::Vector status(owned_dofs, communicator);
+    for (const auto &node : nodes)
+      if (node.owned)
+        status(node.dofs[0]) = node.active + 1;
+    status.compress(VectorOperation::insert);
+    PETScWrappers::MPI::Vector ghosted(owned_dofs, relevant_dofs, communicator);
+    ghosted = status;
+    for (auto &node : nodes)
+      if (!node.owned)
+        node.active = static_cast<int>(std::lround(ghosted(node.dofs[0]))) - 1;
+  }
+
+  template <int dim>
+  void ContactSet<dim>::add_constraints(AffineConstraints<double> &constraints, const PETScWrappers::MPI::Vector &u,
+                                        const double load_factor, const bool homogeneous) const
+  {
+    for (const auto &node : nodes)
+      if (node.active >= 0)
+        {
+          Tensor<1, dim> n;
+          const double   gap = obstacles[node.active].gap(position(node, u), load_factor, n);
+          // The component that carries the constraint: the free one most aligned with n.
+          int k = -1;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (!constraints.is_constrained(node.dofs[d]) && (k < 0 || std::abs(n[d]) > std::abs(n[k])))
+              k = d;
+          // Held components cannot move the node along n: it stays as the supports hold it.
+          if (k < 0 || std::abs(n[k]) < 0.2)
+            continue;
+          constraints.add_line(node.dofs[k]);
+          for (unsigned int d = 0; d < dim; ++d)
+            if (static_cast<int>(d) != k && n[d] != 0)
+              constraints.add_entry(node.dofs[k], node.dofs[d], -n[d] / n[k]);
+          constraints.set_inhomogeneity(node.dofs[k], homogeneous ? 0. : -gap / n[k]);
+        }
+  }
+
+  template <int dim>
+  typename ContactSet<dim>::Result ContactSet<dim>::result(const PETScWrappers::MPI::Vector &u,
+                                                           const PETScWrappers::MPI::Vector &residual,
+                                                           const double load_factor) const
+  {
+    Result result;
+    result.obstacles.resize(obstacles.size());
+    for (const auto &node : nodes)
+      if (node.owned)
+        {
+          const Point<dim> x = position(node, u);
+          Tensor<1, dim>   n;
+          double           gap;
+          nearest(node, x, load_factor, gap, n);
+          result.max_penetration = std::max(result.max_penetration, -gap);
+          if (node.active < 0)
+            continue;
+          gap           = obstacles[node.active].gap(x, load_factor, n);
+          double lambda = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            lambda -= residual(node.dofs[d]) * n[d];
+          auto &r = result.obstacles[node.active];
+          r.force += lambda * n;
+          Tensor<1, 3> x3, f3;
+          for (unsigned int d = 0; d < dim; ++d)
+            x3[d] = x[d], f3[d] = lambda * n[d];
+          r.moment += cross_product_3d(x3, f3);
+          ++r.nodes;
+          ++result.active_nodes;
+        }
+    for (auto &r : result.obstacles)
+      {
+        r.force  = Utilities::MPI::sum(r.force, communicator);
+        r.moment = Utilities::MPI::sum(r.moment, communicator);
+        r.nodes  = Utilities::MPI::sum(r.nodes, communicator);
+      }
+    result.active_nodes    = Utilities::MPI::sum(result.active_nodes, communicator);
+    result.max_penetration = std::max(0., Utilities::MPI::max(result.max_penetration, communicator));
+    return result;
+  }
+
+  template <int dim>
+  void ContactSet<dim>::write_csv(const std::string &file, const PETScWrappers::MPI::Vector &u,
+                                  const PETScWrappers::MPI::Vector &residual, const double load_factor) const
+  {
+    constexpr unsigned int record = 2 * dim + 5; // reference, position, gap, force, area, pressure, obstacle
+    std::vector<double>    local;
+    for (const auto &node : nodes)
+      if (node.owned)
+        {
+          const Point<dim> x = position(node, u);
+          Tensor<1, dim>   n;
+          double           gap;
+          unsigned int     o = nearest(node, x, load_factor, gap, n);
+          double           lambda = 0;
+          if (node.active >= 0)
+            {
+              o   = node.active;
+              gap = obstacles[o].gap(x, load_factor, n);
+              for (unsigned int d = 0; d < dim; ++d)
+                lambda -= residual(node.dofs[d]) * n[d];
+            }
+          for (unsigned int d = 0; d < dim; ++d)
+            local.push_back(node.reference[d]);
+          for (unsigned int d = 0; d < dim; ++d)
+            local.push_back(x[d]);
+          local.insert(local.end(), {gap, lambda, node.area, node.area > 0 ? lambda / node.area : 0.,
+                                     node.active >= 0 ? double(o) : -1.});
+        }
+    const auto parts = Utilities::MPI::gather(communicator, local);
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    std::vector<std::vector<double>> rows;
+    for (const auto &part : parts)
+      for (std::size_t k = 0; k + record <= part.size(); k += record)
+        rows.emplace_back(part.begin() + k, part.begin() + k + record);
+    std::sort(rows.begin(), rows.end());
+    std::ofstream out(file);
+    const char   *axes[] = {"x", "y", "z"};
+    for (unsigned int d = 0; d < dim; ++d)
+      out << "reference_" << axes[d] << ",";
+    for (unsigned int d = 0; d < dim; ++d)
+      out << axes[d] << ",";
+    out << "gap,force,area,pressure,obstacle\n" << std::setprecision(12);
+    for (const auto &row : rows)
+      {
+        for (unsigned int k = 0; k + 1 < record; ++k)
+          out << row[k] << ",";
+        out << (row.back() >= 0 ? obstacles[static_cast<unsigned int>(row.back())].name : std::string()) << "\n";
+      }
+  }
+
+  template class ContactSet<2>;
+  template class ContactSet<3>;
+} // namespace compliant

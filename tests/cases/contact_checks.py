@@ -1,0 +1,200 @@
+#!/usr/bin/python3
+"""Contact with rigid obstacles (Contact/Obstacles, nonlinear static), checked against references
+that do not come from the contact code: Hertz's closed form, the run without the obstacle, the
+equilibrium of the reactions, and the same run on other rank counts.
+
+    contact_checks.py hertz | ranks | motion | stop | stop_3d
+"""
+import csv
+import math
+import os
+import shutil
+import sys
+import tempfile
+
+here = os.path.dirname(os.path.abspath(__file__))
+cases = os.path.join(here, "..", "..", "cases")
+sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
+from study import run_case  # noqa: E402
+from case_checks import check, finish, readme_figure, unknown_mode  # noqa: E402
+
+HERTZ = os.path.join(cases, "contact", "hertz_cylinder.prm")
+STOP = os.path.join(cases, "contact", "flexure_hinge_stop.prm")
+STOP_3D = os.path.join(cases, "contact", "cantilever_3d_stop.prm")
+
+
+def run_with_files(case, sets=(), np=2):
+    """Runs a case; returns (quantities, rows of curve.csv, rows of contact.csv)."""
+    out = tempfile.mkdtemp(prefix="compliant-contact-")
+    try:
+        q = run_case(case, list(sets), np=np, output_dir=out)["quantities"]
+        with open(os.path.join(out, "curve.csv")) as f:
+            curve = list(csv.DictReader(f))
+        nodes = []
+        if os.path.exists(os.path.join(out, "contact.csv")):
+            with open(os.path.join(out, "contact.csv")) as f:
+                nodes = list(csv.DictReader(f))
+        return q, curve, nodes
+    finally:
+        shutil.rmtree(out, ignore_errors=True)
+
+
+def no_penetration(q, nodes, what):
+    """The stated tolerance holds: at every node (contact.csv) and in the summary."""
+    tol = q["contact_penetration_tolerance"]
+    deepest = max(-float(n["gap"]) for n in nodes)
+    held = [abs(float(n["gap"])) for n in nodes if n["obstacle"]]
+    check(q["contact_max_penetration"] <= tol and deepest <= tol,
+          "%s: no node deeper than the tolerance %.3g (deepest %.3g, summary %.3g)"
+          % (what, tol, deepest, q["contact_max_penetration"]))
+    check(max(held) <= tol, "%s: every held node on the obstacle within the tolerance (largest gap %.3g)"
+          % (what, max(held)))
+
+
+def hertz_fit(nodes):
+    """Contact pressure at the nodes on the plane from their forces and the deformed positions
+    (Q1: a node carries half of each segment beside it; the symmetry node half of one), and the
+    Hertz ellipse p^2 = p0^2 (1 - x^2 / b^2) fitted to the nodes inside the contact (the last
+    held node, cut by the edge, left out). Returns (b, p0 fitted, p at x = 0, held nodes)."""
+    rows = sorted(nodes, key=lambda n: float(n["x"]))
+    x = [float(n["x"]) for n in rows]
+    force = [float(n["force"]) for n in rows]
+    held = [i for i, n in enumerate(rows) if n["obstacle"]]
+    pressure = []
+    for i in range(len(rows) - 1):
+        width = (x[i + 1] - x[i]) / 2 + ((x[i] - x[i - 1]) / 2 if i > 0 else 0)
+        pressure.append(force[i] / width)
+    inside = held[:-1]
+    n = len(inside)
+    sx = sum(x[i] ** 2 for i in inside)
+    sy = sum(pressure[i] ** 2 for i in inside)
+    sxx = sum(x[i] ** 4 for i in inside)
+    sxy = sum(x[i] ** 2 * pressure[i] ** 2 for i in inside)
+    slope = (n * sxy - sx * sy) / (n * sxx - sx ** 2)
+    intercept = (sy - slope * sx) / n
+    return math.sqrt(-intercept / slope), math.sqrt(intercept), pressure[0], len(held)
+
+
+mode = sys.argv[1] if len(sys.argv) > 1 else ""
+if mode == "hertz":
+    # Plane strain Hertz (rigid plane): b = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi b), E* = E/(1 - nu^2),
+    # for the force P the run itself carries. nb = 20 and 40 cells across b: the finer is the
+    # answer, the coarser shows how far it still moves (the README's figures).
+    E, nu, R = 1000.0, 0.3, 10.0
+    Es = E / (1 - nu ** 2)
+    results = {}
+    for nb in (20, 40):
+        q, curve, nodes = run_with_files(HERTZ, ["Geometry/Parameters/nb=%d" % nb])
+        P = 2 * q["contact_force_ground_y"]  # the quarter model carries half of the contact
+        b_h = math.sqrt(4 * P * R / (math.pi * Es))
+        p0_h = 2 * P / (math.pi * b_h)
+        b, p0, p_center, held = hertz_fit(nodes)
+        results[nb] = (b / b_h - 1, p0 / p0_h - 1, p_center / p0_h - 1)
+        print("nb = %d: P = %.6g, %d held nodes; b %.5f (Hertz %.5f, %+.2f %%), p0 fitted %.4f, at x = 0 %.4f "
+              "(Hertz %.4f: %+.2f %%, %+.2f %%); Newton %s per step" %
+              (nb, P, held, b, b_h, 100 * results[nb][0], p0, p_center, p0_h, 100 * results[nb][1],
+               100 * results[nb][2], [r["newton_iterations"] for r in curve]))
+        # The obstacle's force is what the pushed edge carries: equilibrium of the quarter in y.
+        check(abs(P / 2 + q["reaction_force_top_y"]) <= 1e-8 * P,
+              "nb = %d: contact force %.8g balances the reaction at the top %.8g" % (nb, P / 2, q["reaction_force_top_y"]))
+        check(0.005 < b_h / R < 0.02, "nb = %d: b/R = %.4f: the small-strain, small-contact regime of Hertz" % (nb, b_h / R))
+        no_penetration(q, nodes, "nb = %d" % nb)
+    # The issue's bar is 2 % at a converged mesh: nb = 40 must be within it and nb = 20 -> 40 must
+    # have moved each figure by less than 1 % (converged to that level).
+    # The README's figures (Contact), to 3 units of their last digit.
+    for nb, figures in ((40, ("-0.26", "+0.23", "+0.32")), (20, ("-0.30", "+0.24", "+0.31"))):
+        for k, name in enumerate(("b", "p0 fitted", "p at x = 0")):
+            readme_figure(results[nb][k], figures[k], "nb = %d: %s against Hertz, %%" % (nb, name), scale=100)
+    for k, name in enumerate(("half-width b", "peak pressure p0 (fitted)", "pressure at x = 0")):
+        check(abs(results[40][k]) < 0.02, "%s within 2 %% of Hertz at nb = 40 (%+.2f %%)" % (name, 100 * results[40][k]))
+        check(abs(results[40][k] - results[20][k]) < 0.01, "%s moves %.2f %% from nb = 20 to 40 (< 1 %%)"
+              % (name, 100 * abs(results[40][k] - results[20][k])))
+elif mode == "ranks":
+    # The same answers on 1, 2 and 3 ranks: forces to 1e-9, the same active set.
+    runs = {np: run_with_files(HERTZ, np=np)[0] for np in (1, 2, 3)}
+    for np in (2, 3):
+        for key in ("contact_force_ground_y", "contact_moment_ground_z", "reaction_force_top_y"):
+            a, b = runs[1][key], runs[np][key]
+            check(abs(a - b) <= 1e-9 * abs(a), "%s on %d ranks %.12g = on 1 rank %.12g" % (key, np, b, a))
+        check(runs[np]["contact_active_nodes"] == runs[1]["contact_active_nodes"],
+              "%d held nodes on %d ranks, %d on 1" % (runs[np]["contact_active_nodes"], np, runs[1]["contact_active_nodes"]))
+        check(runs[np]["contact_max_penetration"] <= runs[np]["contact_penetration_tolerance"],
+              "no penetration beyond the tolerance on %d ranks" % np)
+elif mode == "motion":
+    # The plane moving up by 0.003 against a held top is the top pushed down by 0.003 onto a fixed
+    # plane, translated: the same forces (to Newton's tolerance, 1e-9 of the force scale).
+    pushed, _, _ = run_with_files(HERTZ)
+    lifted, _, nodes = run_with_files(HERTZ, ["Boundary conditions/Displacement=top: y=0; sym: x=0",
+                                              "Contact/Obstacles=ground: plane, point=0 0, normal=0 1, motion=0 0.003"])
+    a, b = pushed["contact_force_ground_y"], lifted["contact_force_ground_y"]
+    check(abs(a - b) <= 1e-7 * a, "moving plane: force %.10g, pushed top: %.10g" % (b, a))
+    check(lifted["contact_active_nodes"] == pushed["contact_active_nodes"] == 22, "the same held nodes (%d; README: 22)"
+          % lifted["contact_active_nodes"])
+    no_penetration(lifted, nodes, "moving plane")
+elif mode == "stop":
+    # The hinge closing onto its stop (cases/contact/flexure_hinge_stop.prm) against the same hinge
+    # without the pin.
+    q, curve, nodes = run_with_files(STOP)
+    free_q, free, _ = run_with_files(STOP, ["Contact/Obstacles=", "Contact/Boundaries="])
+    angle = lambda rows: [(float(r["load_factor"]), float(r["link_angle_deg"])) for r in rows]
+    touched = [i for i, r in enumerate(curve) if float(r["contact_active_nodes"]) > 0]
+    first = touched[0]
+    print("moment/rotation (load factor, degrees): with the pin %s" % ["%.3g: %.3f" % p for p in angle(curve)])
+    print("without: %s" % ["%.3g: %.3f" % p for p in angle(free)])
+    print("Newton per step with the pin %s, without %s" % ([r["newton_iterations"] for r in curve],
+                                                          [r["newton_iterations"] for r in free]))
+    # 1. Before the link touches, the curve is the free hinge's, step by step.
+    same = all(abs(float(a["link_angle_deg"]) - float(b["link_angle_deg"])) <= 1e-9 * max(1, abs(float(b["link_angle_deg"])))
+               and a["load_factor"] == b["load_factor"] for a, b in zip(curve[:first], free[:first]))
+    check(first >= 3 and same, "the %d steps before contact equal the free hinge's" % first)
+    # 2. Contact begins where the link, turned rigidly about the flexure centre, meets the pin
+    # (10 degrees by construction; the link bends a little, so within half a degree).
+    onset = float(curve[first - 1]["link_angle_deg"]), float(curve[first]["link_angle_deg"])
+    check(onset[0] < 10.5 and onset[1] > 9.5, "contact begins between %.3f and %.3f degrees (the pin at 10)" % onset)
+    # 3. The kink: past contact the moment turns the link far less than the free hinge's.
+    last, free_last = float(curve[-1]["link_angle_deg"]), float(free[-1]["link_angle_deg"])
+    check(free_last > 18 and last < 12, "the pin stops the link at %.2f degrees (free: %.2f)" % (last, free_last))
+    readme_figure(last, "10.50", "link angle at the full moment on the pin (README)")
+    readme_figure(free_last, "21.05", "link angle at the full moment, free hinge (README)")
+    readme_figure(onset[0], "9.47", "last angle before contact (README)")
+    readme_figure(onset[1], "10.21", "first angle with contact (README)")
+    slope_before = (onset[1] - float(curve[0]["link_angle_deg"])) / (float(curve[first]["load_factor"]) - float(curve[0]["load_factor"]))
+    slope_after = (last - float(curve[-3]["link_angle_deg"])) / (float(curve[-1]["load_factor"]) - float(curve[-3]["load_factor"]))
+    check(slope_after < 0.3 * slope_before, "rotation per moment after contact %.3g, before %.3g: the kink"
+          % (slope_after, slope_before))
+    # 4. Equilibrium: base reaction + contact force = 0 (the rigid end carries a pure moment), and
+    # the moments about the origin: base + applied + contact = 0.
+    F = math.hypot(q["contact_force_pin_x"], q["contact_force_pin_y"])
+    for axis in ("x", "y"):
+        residual = q["reaction_force_base_" + axis] + q["contact_force_pin_" + axis]
+        check(abs(residual) <= 1e-6 * F, "forces in %s: base %.6g + pin %.6g = %.2g" %
+              (axis, q["reaction_force_base_" + axis], q["contact_force_pin_" + axis], residual))
+    moment = q["reaction_moment_base_z"] + 1.3 + q["contact_moment_pin_z"]
+    check(abs(moment) <= 1e-6 * 1.3, "moments: base %.6g + applied 1.3 + pin %.6g = %.2g"
+          % (q["reaction_moment_base_z"], q["contact_moment_pin_z"], moment))
+    no_penetration(q, nodes, "hinge on its stop")
+elif mode == "stop_3d":
+    # 3D: a cantilever pushed onto a cylinder across it, then onto a sphere under its middle line:
+    # the supports and the obstacle in equilibrium (no load but the prescribed end), no node deeper
+    # than the tolerance, and the cylinder's answer the same on 1 and 2 ranks.
+    runs = [("cylinder, 2 ranks", [], 2), ("cylinder, 1 rank", [], 1),
+            ("sphere, 2 ranks", ["Contact/Obstacles=stop: sphere, center=60 -56 0, radius=50"], 2)]
+    results = {}
+    for name, sets, np in runs:
+        q, curve, nodes = run_with_files(STOP_3D, sets, np=np)
+        results[name] = q
+        F = math.sqrt(sum(q["contact_force_stop_" + a] ** 2 for a in "xyz"))
+        print("%s: contact force %s, %d held nodes, Newton per step %s" % (
+            name, ["%.6g" % q["contact_force_stop_" + a] for a in "xyz"], q["contact_active_nodes"],
+            [r["newton_iterations"] for r in curve]))
+        check(q["contact_active_nodes"] > 0 and F > 0, "%s: the beam rests on the stop" % name)
+        for a in "xyz":
+            residual = q["reaction_force_left_" + a] + q["reaction_force_right_" + a] + q["contact_force_stop_" + a]
+            check(abs(residual) <= 1e-8 * F, "%s: forces in %s balance (%.2g)" % (name, a, residual))
+        no_penetration(q, nodes, name)
+    a, b = results["cylinder, 2 ranks"], results["cylinder, 1 rank"]
+    for key in ("contact_force_stop_x", "contact_force_stop_y", "contact_active_nodes"):
+        check(abs(a[key] - b[key]) <= 1e-9 * abs(b[key]), "%s on 2 ranks %.12g = on 1 rank %.12g" % (key, a[key], b[key]))
+else:
+    unknown_mode(mode, ("hertz", "ranks", "motion", "stop", "stop_3d"))
+finish()
