@@ -32,7 +32,8 @@ namespace compliant
       "curve.csv), contact_max_penetration and contact_penetration_tolerance; contact.csv lists "
       "every contact node (position, gap, force, pressure).");
     prm.declare_entry("Boundaries", "", Patterns::Anything(),
-                      "The part's boundaries that may touch every obstacle: 'bottom, side'.");
+                      "The part's boundaries that may touch every obstacle: 'bottom, side' (commas, "
+                      "spaces or semicolons between names).");
     prm.declare_entry("Penetration tolerance", "1e-8", Patterns::Double(0, 1e-2),
                       "A load step converges only when no contact node lies deeper than this "
                       "fraction of the part's size (its bounding-box diagonal) inside an "
@@ -97,8 +98,9 @@ namespace compliant
     {
       std::set<int> ids;
       std::string   spaced = names;
+      // Commas, spaces or (in Contact/Boundaries, like Quantities/Reactions) semicolons.
       for (char &c : spaced)
-        if (c == ',')
+        if (c == ',' || c == ';')
           c = ' ';
       for (const auto &name : split(spaced, ' '))
         if (!name.empty())
