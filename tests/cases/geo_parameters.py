@@ -49,6 +49,7 @@ BAD = {
     "flap_mechanism": ("plane stress", "lk=12", "lk + 2 rf t below the crank and rocker lengths"),
     "flexure_hinge_2d": ("plane stress", "t=10", "0 < t < T"),
     "flexure_hinge_3d": ("3d", "t=0", "0 < t < T"),
+    "hertz_cylinder_2d": ("plane stress", "nb=0", "nb >= 1"),
     "jansen_leg": ("plane stress", "rp=15", "0 < rp < w/2"),
     "leaf_coupling": ("3d", "b=0", "L, a, b > 0"),
     "leaf_spring": ("3d", "nb=0", "nb >= 1"),
