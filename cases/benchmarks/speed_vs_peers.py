@@ -129,6 +129,26 @@ def run_calculix(n):
     return out
 
 
+def richardson(ns, qs):
+    """(observed order p, extrapolated limit) of q(n) = q_inf + C n^-p through three meshes n0 < n1 < n2
+    (cells across ~ n). Any three meshes, not only a halving ladder: with n = 1, 2, 3 the spacing
+    ratio is 2 then 1.5, and one ratio for both misplaces the limit. p by bisection on the ratio of
+    the two differences, (n0^-p - n1^-p) / (n1^-p - n2^-p), which grows with p."""
+    (n0, n1, n2), (q0, q1, q2) = ns, qs
+    if q2 == q1:
+        return float("nan"), q2
+    target = abs((q0 - q1) / (q1 - q2))
+    ratio = lambda p: (n0 ** -p - n1 ** -p) / (n1 ** -p - n2 ** -p)  # noqa: E731
+    lo, hi = 1e-3, 20.0
+    if not ratio(lo) < target < ratio(hi):
+        return float("nan"), q2
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if ratio(mid) < target else (lo, mid)
+    p = 0.5 * (lo + hi)
+    return p, q2 - (q1 - q2) / (n1 ** -p - n2 ** -p) * n2 ** -p
+
+
 def time_at_error(rows, target):
     """Wall time at a given error, interpolated log-log between the two bracketing meshes."""
     pts = sorted((r["error"], r["wall_s"]) for r in rows if r["error"] > 0)
@@ -190,10 +210,7 @@ def main():
     if triple is None:
         ns = sorted(q)[-3:]
         triple = tuple(ns)
-    q0, q1, q2 = (q[t] for t in triple)
-    ratio = triple[1] / triple[0]
-    order = math.log(abs((q1 - q0) / (q2 - q1))) / math.log(ratio) if q2 != q1 else float("nan")
-    reference = q2 + (q2 - q1) / (ratio ** order - 1)
+    order, reference = richardson(triple, [q[t] for t in triple])
     for r in done:
         r["error"] = abs(r["qoi"] - reference) / abs(reference)
     print("\nReference %s %.9g (Richardson on our n = %s, observed order %.2f)" % (PROBLEM["label"], reference, triple, order))
