@@ -38,7 +38,7 @@ BENCHMARKS = {
               ["--problem", "hinge", "--n", "2,3,4", "--methods", "auto"], ["fenicsx", "calculix"],
               "hinge_speed.{md,csv,png}", 40),
     "flexure-finite-strain": ("speed_vs_peers.py", ["--problem", "flexure-finite-strain", "--methods", "auto,direct"],
-                              ["--problem", "flexure-finite-strain", "--n", "1,2", "--methods", "auto"], ["fenicsx"],
+                              ["--problem", "flexure-finite-strain", "--n", "1,2", "--methods", "auto"], ["fenicsx", "calculix"],
                               "flexure-finite-strain_speed.{md,csv,png}", 90),
     "finite-strain": ("finite_strain_speed.py", [], ["--meshes", "20x4x1,40x8x2", "--methods", "matrix-free"],
                       [], "finite_strain_speed.{md,csv,png}", 15),

@@ -57,12 +57,15 @@ PROBLEMS["hinge"] = dict(case="hinge_3d.prm", mesh=lambda m: {}, mesh_file=hinge
                          calculix_qoi=lambda v: v, dofs=hinge_mesh.q2_dofs, label="strain energy",
                          title="3D blade flexure hinge, level m (blade cells 4:1:5)")
 # Finite strain (issue 30, item 2): the neo-Hookean strip turned 45 degrees of flexure_finite_strain.prm
-# on 20n x 4n x n cells; FEniCSx with the same law, quadrature and load factors; CalculiX not yet.
+# on 20n x 4n x n cells; FEniCSx with the same law, quadrature and load factors; CalculiX NLGEOM with
+# C3D20R and its NEO HOOKE law (the same small-strain mu and K, isochoric I1bar and (J - 1)^2 at finite
+# strain), the end on a *RIGID BODY turned 45 degrees, 6 increments (peers/calculix_flexure_finite_strain.py).
 PROBLEMS["flexure-finite-strain"] = dict(
     case="flexure_finite_strain.prm", mesh=lambda n: {"nx": 20 * n, "ny": 4 * n, "nz": n},
     qoi=lambda q: q["reaction_moment_right_y"], fenicsx="fenicsx_flexure_finite_strain.py",
-    fenicsx_qoi=lambda v: v, fenicsx_args=["direct"], fenicsx_variant="mumps", peers=["fenicsx"],
-    solve_key="time_linear_solves",
+    fenicsx_qoi=lambda v: v, fenicsx_args=["direct"], fenicsx_variant="mumps", peers=["fenicsx", "calculix"],
+    calculix="calculix_flexure_finite_strain.py", calculix_args=lambda n, work: [str(n), work],
+    calculix_qoi=lambda v: v, calculix_variant="C3D20R spooles", solve_key="time_linear_solves",
     iterations_key="newton_iterations", dofs=lambda n: 3 * (40 * n + 1) * (8 * n + 1) * (2 * n + 1),
     label="end moment M_y", title="TPU strip turned 45 degrees (neo-Hookean, 6 load steps), 20n x 4n x n hexahedra")
 PROBLEM = PROBLEMS["cantilever"]
@@ -109,16 +112,41 @@ def run_fenicsx(n, ranks):
 
 
 def run_calculix(n):
+    """One CalculiX run by the problem's helper (calculix_box.py PROBLEM N WORK by default)."""
     work = tempfile.mkdtemp(prefix="ccx-")
-    proc = subprocess.run(["/usr/bin/python3", os.path.join(HERE, "peers", "calculix_box.py"), PROBLEM_NAME, str(n), work],
-                          capture_output=True, text=True)
+    script = os.path.join(HERE, "peers", PROBLEM.get("calculix", "calculix_box.py"))
+    args = PROBLEM.get("calculix_args", lambda n, work: [PROBLEM_NAME, str(n), work])(n, work)
+    proc = subprocess.run(["/usr/bin/python3", script] + args, capture_output=True, text=True)
     shutil.rmtree(work, ignore_errors=True)
     if proc.returncode != 0:
         return {"skipped": "CalculiX failed: " + proc.stderr.strip()[-300:]}
     r = json.loads(proc.stdout.strip().splitlines()[-1])
-    # ccx does not report its solve separately; its wall time is the whole process.
-    return {"dofs": r["dofs"], "qoi": PROBLEM["calculix_qoi"](r["qoi"]), "wall_s": r["wall_s"], "solve_s": float("nan"),
-            "iterations": 1, "memory_mb": r["memory_mb"]}
+    # ccx does not report its solve separately; its wall time is the whole process. Linear
+    # problems: one solve; nonlinear ones: the helper's Newton iterations.
+    out = {"dofs": r["dofs"], "qoi": PROBLEM["calculix_qoi"](r["qoi"]), "wall_s": r["wall_s"], "solve_s": float("nan"),
+           "iterations": r.get("iterations", 1), "memory_mb": r["memory_mb"]}
+    out.update({k: r[k] for k in ("increments", "factors") if k in r})  # printed, not tabled
+    return out
+
+
+def richardson(ns, qs):
+    """(observed order p, extrapolated limit) of q(n) = q_inf + C n^-p through three meshes n0 < n1 < n2
+    (cells across ~ n). Any three meshes, not only a halving ladder: with n = 1, 2, 3 the spacing
+    ratio is 2 then 1.5, and one ratio for both misplaces the limit. p by bisection on the ratio of
+    the two differences, (n0^-p - n1^-p) / (n1^-p - n2^-p), which grows with p."""
+    (n0, n1, n2), (q0, q1, q2) = ns, qs
+    if q2 == q1:
+        return float("nan"), q2
+    target = abs((q0 - q1) / (q1 - q2))
+    ratio = lambda p: (n0 ** -p - n1 ** -p) / (n1 ** -p - n2 ** -p)  # noqa: E731
+    lo, hi = 1e-3, 20.0
+    if not ratio(lo) < target < ratio(hi):
+        return float("nan"), q2
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if ratio(mid) < target else (lo, mid)
+    p = 0.5 * (lo + hi)
+    return p, q2 - (q1 - q2) / (n1 ** -p - n2 ** -p) * n2 ** -p
 
 
 def time_at_error(rows, target):
@@ -170,7 +198,8 @@ def main():
         if n <= args.peer_max_n:
             for peer in peers:
                 r = run_fenicsx(n, args.ranks) if peer == "fenicsx" else run_calculix(n)
-                r.update(code=peer, variant=PROBLEM.get("fenicsx_variant", "gamg") if peer == "fenicsx" else "spooles", n=n)
+                variant = PROBLEM.get("fenicsx_variant", "gamg") if peer == "fenicsx" else PROBLEM.get("calculix_variant", "spooles")
+                r.update(code=peer, variant=variant, n=n)
                 rows.append(r)
                 print(json.dumps(r), flush=True)
     done = [r for r in rows if "skipped" not in r]
@@ -181,10 +210,7 @@ def main():
     if triple is None:
         ns = sorted(q)[-3:]
         triple = tuple(ns)
-    q0, q1, q2 = (q[t] for t in triple)
-    ratio = triple[1] / triple[0]
-    order = math.log(abs((q1 - q0) / (q2 - q1))) / math.log(ratio) if q2 != q1 else float("nan")
-    reference = q2 + (q2 - q1) / (ratio ** order - 1)
+    order, reference = richardson(triple, [q[t] for t in triple])
     for r in done:
         r["error"] = abs(r["qoi"] - reference) / abs(reference)
     print("\nReference %s %.9g (Richardson on our n = %s, observed order %.2f)" % (PROBLEM["label"], reference, triple, order))

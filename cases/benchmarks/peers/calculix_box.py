@@ -13,19 +13,13 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import hinge_mesh  # noqa: E402
+from calculix_common import Hex20Grid, run_ccx, uniform  # noqa: E402
 
 problem, n, work = sys.argv[1], int(sys.argv[2]), sys.argv[3]
-
-
-def uniform(lo, hi, cells):
-    return [lo + (hi - lo) * i / cells for i in range(cells + 1)]
-
 
 if problem == "cantilever":
     lines_xyz = uniform(0.0, 10.0, 10 * n), uniform(-0.5, 0.5, n), uniform(-0.5, 0.5, n)
@@ -35,74 +29,36 @@ elif problem == "hinge":
     *lines_xyz, hinge_cells = hinge_mesh.grid(n)
 else:
     sys.exit("unknown problem '%s' (cantilever | leaf | hinge)" % problem)
-nx, ny, nz = (len(g) - 1 for g in lines_xyz)
-cell_list = hinge_cells if problem == "hinge" else [(a, b, c) for c in range(nz) for b in range(ny) for a in range(nx)]
+mesh = Hex20Grid(lines_xyz, hinge_cells if problem == "hinge" else None)
 os.makedirs(work, exist_ok=True)
 
-
-def node_id(i, j, k):  # on the (2nx+1) x (2ny+1) x (2nz+1) grid of corner and mid-side points
-    return 1 + i + (2 * nx + 1) * (j + (2 * ny + 1) * k)
-
-
-def coordinates(i, j, k):  # even indices on the grid lines, odd ones half-way between
-    return tuple(g[c // 2] if c % 2 == 0 else 0.5 * (g[c // 2] + g[c // 2 + 1]) for g, c in zip(lines_xyz, (i, j, k)))
-
-
-# Local corner/mid-side offsets in CalculiX's C3D20 order (corners 1-8, then edges 9-20).
-order = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2),
-         (1, 0, 0), (2, 1, 0), (1, 2, 0), (0, 1, 0), (1, 0, 2), (2, 1, 2), (1, 2, 2), (0, 1, 2),
-         (0, 0, 1), (2, 0, 1), (2, 2, 1), (0, 2, 1)]
-elements, used = [], {}
-for a, b, c in cell_list:
-    ids = []
-    for di, dj, dk in order:
-        ijk = (2 * a + di, 2 * b + dj, 2 * c + dk)
-        used[node_id(*ijk)] = ijk
-        ids.append(node_id(*ijk))
-    elements.append(ids)
-lines = ["*NODE"] + ["%d, %.12g, %.12g, %.12g" % ((nid,) + coordinates(*ijk)) for nid, ijk in sorted(used.items())]
-lines.append("*ELEMENT, TYPE=C3D20R, ELSET=EALL")
-for e, ids in enumerate(elements):
-    lines.append("%d, %s," % (e + 1, ", ".join(map(str, ids[:15]))))
-    lines.append(", ".join(map(str, ids[15:])))
-fixed = sorted(nid for nid, ijk in used.items() if ijk[0] == 0)
+lines = mesh.deck("C3D20R")
+fixed = mesh.nodes_where(0, 0)
 lines += ["*NSET, NSET=FIX"] + ["%d," % f for f in fixed]
 lines += ["*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.3", "*DENSITY", "1.",
           "*SOLID SECTION, ELSET=EALL, MATERIAL=M", "*STEP", "*STATIC", "*BOUNDARY", "FIX, 1, 3"]
 if problem == "cantilever":
-    tip = node_id(2 * nx, ny, nz)
+    tip = mesh.node_id(2 * mesh.nx, mesh.ny, mesh.nz)
     lines += ["*DLOAD", "EALL, GRAV, 1., 0., 0., -1.", "*NSET, NSET=TIP", "%d," % tip, "*NODE PRINT, NSET=TIP", "U"]
 elif problem == "leaf":
     theta = math.radians(1.0)
-    for nid, ijk in sorted(used.items()):
-        if ijk[0] == 2 * nx:
-            _, y, z = coordinates(*ijk)
-            lines += ["%d, 1, 1, 0." % nid,
-                      "%d, 2, 2, %.10g" % (nid, y * (math.cos(theta) - 1) - z * math.sin(theta)),  # ccx reads 20 characters
-                      "%d, 3, 3, %.10g" % (nid, y * math.sin(theta) + z * (math.cos(theta) - 1))]
+    for nid in mesh.nodes_where(0, 2 * mesh.nx):
+        _, y, z = mesh.coordinates(*mesh.used[nid])
+        lines += ["%d, 1, 1, 0." % nid,
+                  "%d, 2, 2, %.10g" % (nid, y * (math.cos(theta) - 1) - z * math.sin(theta)),  # ccx reads 20 characters
+                  "%d, 3, 3, %.10g" % (nid, y * math.sin(theta) + z * (math.cos(theta) - 1))]
     lines += ["*EL PRINT, ELSET=EALL, TOTALS=ONLY", "ELSE"]
 else:
-    for nid, ijk in sorted(used.items()):
-        if ijk[0] == 2 * nx:
-            x, y, _ = coordinates(*ijk)
-            ux, uy = hinge_mesh.turned_displacement(x, y)
-            lines += ["%d, 1, 1, %.10g" % (nid, ux), "%d, 2, 2, %.10g" % (nid, uy), "%d, 3, 3, 0." % nid]
+    for nid in mesh.nodes_where(0, 2 * mesh.nx):
+        x, y, _ = mesh.coordinates(*mesh.used[nid])
+        ux, uy = hinge_mesh.turned_displacement(x, y)
+        lines += ["%d, 1, 1, %.10g" % (nid, ux), "%d, 2, 2, %.10g" % (nid, uy), "%d, 3, 3, 0." % nid]
     lines += ["*EL PRINT, ELSET=EALL, TOTALS=ONLY", "ELSE"]
 lines.append("*END STEP")
-with open(os.path.join(work, "job.inp"), "w") as f:
-    f.write("\n".join(lines) + "\n")
-
-env = dict(os.environ, OMP_NUM_THREADS="2", CCX_NPROC_EQUATION_SOLVER="2")
-start = time.perf_counter()
-proc = subprocess.run(["/usr/bin/time", "-f", "MAXRSS %M", "ccx", "-i", "job"], cwd=work,
-                      capture_output=True, text=True, env=env)
-wall = time.perf_counter() - start
-if proc.returncode != 0:
-    sys.exit("ccx failed: " + proc.stdout[-500:] + proc.stderr[-500:])
+wall, memory = run_ccx(work, lines)
 dat = open(os.path.join(work, "job.dat")).read()
 if problem == "cantilever":
     qoi = float(re.findall(r"^\s*%d\s+(\S+)\s+(\S+)\s+(\S+)" % tip, dat, re.M)[-1][2])
 else:
     qoi = float(re.findall(r"total internal energy[^\n]*\n\s*\n?\s*(\S+)", dat)[-1])
-memory = float(re.findall(r"MAXRSS (\d+)", proc.stderr)[-1]) / 1024.0
-print(json.dumps({"dofs": 3 * len(used), "qoi": qoi, "wall_s": wall, "memory_mb": memory, "iterations": 1}))
+print(json.dumps({"dofs": 3 * len(mesh.used), "qoi": qoi, "wall_s": wall, "memory_mb": memory, "iterations": 1}))
