@@ -123,11 +123,13 @@ elif mode == "snap":
     check(s["quantities"]["load_factor"] == 1, "displacement control follows past the limit point")
 elif mode == "matrix_free":
     # Newton steps solved by CG with the p-multigrid on the matrix-free tangent give the answer of
-    # MUMPS on the assembled tangent. README (Speed, finite strain): the same 30 Newton iterations,
-    # the same answer "to all 12 printed digits", CG 20-22 per Newton step from 3k to 112k DoFs
-    # (22.4 on this 3k-DoF strip; 36 with cells 2.5 : 1). On the 3D strip (the README's case, coarse):
-    # 12 digits (3 units of the 12th), Newton equal and 30 (+- 3), CG per step 22.4 (+- 0.3). The 2D
-    # elastica has no README figure: 1e-8 (the residual is converged to 1e-9 of the force scale).
+    # MUMPS on the assembled tangent. The CG solves are inexact (Eisenstat-Walker forcing terms, at
+    # most 1e-2) and the preconditioner is rebuilt only when a solve slows down, so the two paths
+    # agree to Newton's own tolerance (residual below 1e-9 of the force scale): 1e-9 relative,
+    # measured 6e-11 and 8e-12 on the strip, 4e-12 on the elastica. Newton may take up to two
+    # iterations more in all (the unit test's bound per step is two; measured 32 against 30). README
+    # (Speed, finite strain): 30 (+- 3) Newton iterations and 9.1 (+- 0.3) CG iterations per Newton
+    # step on this 3k-DoF strip, with fewer preconditioner builds than Newton steps.
     runs = [("3D TPU strip turned 45 deg", os.path.join(cases, "benchmarks", "flexure_finite_strain.prm"),
              ["Geometry/Parameters/nx=20", "Geometry/Parameters/ny=4", "Geometry/Parameters/nz=1"],
              ("reaction_moment_right_y", "displacement_mid_z")),
@@ -141,18 +143,17 @@ elif mode == "matrix_free":
         for key in keys:
             difference = abs(qf[key] - qd[key]) / abs(qd[key])
             print("%s %-26s direct %.12g  matrix-free %.12g  (%.1e)" % (title, key, qd[key], qf[key], difference))
-            if "3D" in title:
-                digit12 = 10.0 ** (math.floor(math.log10(abs(qd[key]))) - 11)
-                check(abs(qf[key] - qd[key]) <= 3 * digit12, "%s: %s agrees with MUMPS to 12 digits (+- %.0e)"
-                      % (title, key, 3 * digit12))
-            else:
-                check(difference <= 1e-8, "%s: %s agrees with MUMPS to 1e-8" % (title, key))
+            check(difference <= 1e-9, "%s: %s agrees with MUMPS to 1e-9" % (title, key))
         per_step = qf["linear_iterations"] / qf["linear_solves"]
-        print("%s: Newton %d (direct %d), CG %.1f per Newton step" % (title, qf["newton_iterations"], qd["newton_iterations"], per_step))
-        check(qf["newton_iterations"] == qd["newton_iterations"], "%s: same Newton iterations" % title)
+        builds = qf.get("preconditioner_builds", 0)
+        print("%s: Newton %d (direct %d), CG %.2f per Newton step, %d preconditioner builds"
+              % (title, qf["newton_iterations"], qd["newton_iterations"], per_step, builds))
+        check(qd["newton_iterations"] <= qf["newton_iterations"] <= qd["newton_iterations"] + 2,
+              "%s: Newton iterations within two of MUMPS's" % title)
+        check(0 < builds < qf["newton_iterations"], "%s: the preconditioner is rebuilt less often than Newton steps" % title)
         if "3D" in title:
             readme_figure(qf["newton_iterations"], "30", "%s: Newton iterations" % title)
-            readme_figure(per_step, "22.4", "%s: CG iterations per Newton step" % title)
+            readme_figure(per_step, "9.1", "%s: CG iterations per Newton step" % title)
 elif mode == "plane_stress_pressure":
     # Follower pressure in plane stress: the loaded edge times the thickness stretch. Small
     # pressure: Lame's plane-stress solution (u(a) = p a^2/(E (b^2-a^2)) ((1-nu) a + (1+nu) b^2/a));

@@ -260,6 +260,8 @@ namespace compliant
       q["linear_solves"]         = problem.total_linear_solves;
       if (problem.preconditioner_setup_seconds > 0)
         q["time_preconditioner_setup"] = problem.preconditioner_setup_seconds;
+      if (problem.preconditioner_builds > 0)
+        q["preconditioner_builds"] = problem.preconditioner_builds;
       if (problem.total_linear_iterations > 0)
         q["linear_iterations"] = problem.total_linear_iterations;
     }

@@ -106,6 +106,11 @@ namespace compliant::fast_solver
     // diagonals, Chebyshev eigenvalue estimates, the degree-1 matrix and its solver. The mesh,
     // DoFs, constraints and transfers stay.
     void update(const std::function<void(Operator &)> &change);
+    // Changes only the finest operator (what CG solves with) and keeps the preconditioner built
+    // for an earlier one: a lagged preconditioner, as long as the operator changes little.
+    void update_fine_operator(const std::function<void(Operator &)> &change);
+    // CG's stopping tolerance relative to |f - K g| for the next solves (inexact Newton).
+    void set_relative_tolerance(double tolerance) { settings.relative_tolerance = tolerance; }
 
     // Solves K u = f where u takes the prescribed values of 'constraints' (inhomogeneous).
     // condensed_rhs is C^T f with zero constrained rows (distribute_local_to_global of the cell

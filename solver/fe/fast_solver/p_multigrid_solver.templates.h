@@ -217,6 +217,14 @@ namespace compliant::fast_solver
   }
 
   template <int dim, typename Operator>
+  void PMultigridSolver<dim, Operator>::update_fine_operator(const std::function<void(Operator &)> &change)
+  {
+    Timer timer;
+    change(*levels->operators[levels->operators.max_level()]);
+    stats.setup_seconds += timer.wall_time();
+  }
+
+  template <int dim, typename Operator>
   PMultigridSolver<dim, Operator>::~PMultigridSolver() = default;
 
   template <int dim, typename Operator>

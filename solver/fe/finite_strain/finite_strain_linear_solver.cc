@@ -14,6 +14,7 @@
 #include "fast_solver/tangent_operator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -119,12 +120,13 @@ namespace compliant
       level_operator.set_state(dof_handler, u, response);
     };
     Timer setup_timer;
+    // The preconditioner is rebuilt (every level's state, diagonals, eigenvalue estimates, the
+    // degree-1 factorization) only when the last solve with an older one converged much slower
+    // than right after a rebuild; otherwise only the finest operator takes the new state.
+    bool fresh = true;
     if (!tangent_multigrid)
       {
         fast_solver::PMultigridSettings settings;
-        // Newton needs the correction to a fraction of the residual, not to round-off: 1e-8
-        // keeps the quadratic convergence down to the Newton tolerance (1e-9 of the force scale).
-        settings.relative_tolerance = 1e-8;
         settings.max_iterations     = 300;
         settings.petsc_options      = parameters.petsc_options;
         // The tangent turns with the structure, so the reference rigid-body modes GAMG would be
@@ -149,18 +151,54 @@ namespace compliant
                     << s.smoothing_degree << " over range " << s.smoothing_range << ", degree-1 level by "
                     << (s.coarse_direct ? "MUMPS" : "GAMG") << ")" << std::setprecision(6) << std::endl;
       }
-    else
+    else if (preconditioner_stale)
       tangent_multigrid->update(set_state);
+    else
+      {
+        tangent_multigrid->update_fine_operator(set_state);
+        fresh = false;
+      }
     preconditioner_setup_seconds += setup_timer.wall_time();
+    // Newton's forcing term, but never looser than 0.1 nor tighter than 1e-8, which keeps the
+    // quadratic convergence down to the Newton tolerance (1e-9 of the force scale).
+    const double tolerance = std::clamp(linear_forcing, 1e-8, 0.1);
+    tangent_multigrid->set_relative_tolerance(tolerance);
+    const auto solve = [&]() {
+      try
+        {
+          return tangent_multigrid->solve(rhs, constraints, du);
+        }
+      catch (const SolverControl::NoConvergence &e)
+        {
+          throw std::runtime_error("CG did not converge in " + std::to_string(e.last_step) +
+                                   " iterations (residual " + std::to_string(e.last_residual) + ")");
+        }
+    };
+    unsigned int iterations = 0;
     try
       {
-        return tangent_multigrid->solve(rhs, constraints, du);
+        iterations = solve();
       }
-    catch (const SolverControl::NoConvergence &e)
+    catch (const std::runtime_error &)
       {
-        throw std::runtime_error("CG did not converge in " + std::to_string(e.last_step) +
-                                 " iterations (residual " + std::to_string(e.last_residual) + ")");
+        if (fresh)
+          throw;
+        // A preconditioner of an older state may not fit at all any more: rebuild it once.
+        Timer rebuild_timer;
+        tangent_multigrid->update(set_state);
+        preconditioner_setup_seconds += rebuild_timer.wall_time();
+        fresh      = true;
+        du         = 0;
+        iterations = solve();
       }
+    const double rate = iterations / std::max(1.0, -std::log10(tolerance));
+    if (fresh)
+      {
+        ++preconditioner_builds;
+        preconditioner_rate = rate;
+      }
+    preconditioner_stale = !fresh && rate > lagged_preconditioner_slowdown * preconditioner_rate + 1;
+    return iterations;
   }
 
   template bool FiniteStrainProblem<2>::matrix_free_tangent() const;

@@ -32,6 +32,7 @@ namespace compliant
       , ghosted(p.locally_owned_dofs, p.locally_relevant_dofs, p.communicator)
       , direct{SolverMethod::direct, 1e-12, 1, p.parameters.petsc_options}
       , amg{SolverMethod::cg_amg, 1e-10, 500, p.parameters.petsc_options}
+      , trial_ghosted(p.locally_owned_dofs, p.locally_relevant_dofs, p.communicator)
     {
       ghosted     = p.solution;
       homogeneous = p.make_constraints(target, true, ghosted);
@@ -67,9 +68,19 @@ namespace compliant
         }
       constraints = p.make_constraints(target, false, ghosted);
       matrix_free = p.matrix_free_tangent();
-      Timer assembly_timer;
-      p.assemble(ghosted, target, &constraints, !matrix_free, rhs, iteration > 0 ? &full : nullptr);
-      p.tangent_assembly_seconds += assembly_timer.wall_time();
+      if (matrix_free && iteration > 0 && is_last_trial(u))
+        {
+          // Newton took the full step the line search tried: its residual is this state's.
+          rhs.swap(trial_rhs);
+          full.swap(trial_full);
+        }
+      else
+        {
+          Timer assembly_timer;
+          p.assemble(ghosted, target, &constraints, !matrix_free, rhs, iteration > 0 ? &full : nullptr);
+          p.tangent_assembly_seconds += assembly_timer.wall_time();
+        }
+      has_trial = false;
       Linearization result;
       result.settled  = settled;
       result.residual = last_residual = rhs.l2_norm();
@@ -132,7 +143,25 @@ namespace compliant
       return reference;
     }
 
-    double trial_residual(const Vector &u) override { return p.residual_norm(u, target, homogeneous); }
+    double trial_residual(const Vector &u) override
+    {
+      // Where nothing but the state changes the residual (no rigid boundary linearised at u, no
+      // active set), keep it: the next linearization at this state needs the same vectors.
+      // Without a matrix the constrained rows are zeroed alike by the homogeneous constraints
+      // and by the inhomogeneous ones, whose lines are the same.
+      if (!matrix_free || p.contact || !p.rigid_boundaries.empty())
+        return p.residual_norm(u, target, homogeneous);
+      trial_state = u;
+      trial_ghosted = u;
+      if (trial_rhs.size() == 0)
+        {
+          trial_rhs.reinit(p.locally_owned_dofs, p.communicator);
+          trial_full.reinit(p.locally_owned_dofs, p.communicator);
+        }
+      p.assemble(trial_ghosted, target, &homogeneous, false, trial_rhs, &trial_full);
+      has_trial = true;
+      return trial_rhs.l2_norm();
+    }
 
     void add_correction(Vector &u, const double alpha, const Vector &du) const override
     {
@@ -143,7 +172,19 @@ namespace compliant
 
     bool stop_requested() override { return p.stop_requested && p.stop_requested(); }
 
+    void set_forcing(const double eta) override { p.linear_forcing = eta; }
+
   private:
+    // Whether u is the state of the last trial residual, to the bit.
+    bool is_last_trial(const Vector &u)
+    {
+      if (!has_trial)
+        return false;
+      Vector difference(u);
+      difference -= trial_state;
+      return difference.linfty_norm() == 0;
+    }
+
     void fall_back_to_direct(const std::string &which, const std::string &why)
     {
       p.iterative_failed  = true;
@@ -161,6 +202,9 @@ namespace compliant
     bool                            iterative = false, matrix_free = false;
     std::vector<Vector>             modes;
     double                          last_residual = 0;
+    // The last trial state of the line search, and its residuals (constrained and full).
+    Vector                          trial_state, trial_ghosted, trial_rhs, trial_full;
+    bool                            has_trial = false;
     bool                            near_equilibrium = false;
     // The residual, relative to the force scale, below which the state's contact forces decide
     // which nodes are freed (quadratic convergence: the next state is then at equilibrium to
@@ -175,6 +219,7 @@ namespace compliant
     newton.max_iterations     = settings.max_newton_iterations;
     newton.residual_tolerance = settings.residual_tolerance;
     newton.line_search_steps  = settings.line_search_steps;
+    newton.forcing_max        = newton_forcing_max;
     PETScWrappers::MPI::Vector u(locally_owned_dofs, communicator), du(locally_owned_dofs, communicator);
     u = solution;
     FiniteStrainNewtonSystem<dim> system(*this, target);

@@ -149,11 +149,15 @@ namespace compliant
     unsigned int                       total_linear_solves = 0;
     double                             tangent_assembly_seconds = 0, linear_solve_seconds = 0;
     double                             contact_seconds = 0; // active-set updates (a residual each)
-    // Of linear_solve_seconds: the matrix-free tangent's state on every level, diagonals,
-    // eigenvalue estimates and the degree-1 factorization, once per Newton step.
+    // Of linear_solve_seconds: the matrix-free tangent's state on the finest level every Newton
+    // step, and at each rebuild every level's, diagonals, eigenvalue estimates and the degree-1
+    // factorization.
     double                             preconditioner_setup_seconds = 0;
     // CG iterations over all Newton steps solved iteratively; set once CG failed (MUMPS after).
     unsigned int                       total_linear_iterations = 0;
+    // Of total_linear_solves: how often the p-multigrid preconditioner was rebuilt (the others
+    // reused one built at an earlier state).
+    unsigned int                       preconditioner_builds = 0;
     bool                               iterative_failed        = false;
     std::string                        iterative_failure; // why the iterative solver was left
 
@@ -202,6 +206,20 @@ namespace compliant
     using TangentMultigrid =
       fast_solver::PMultigridSolver<dim, fast_solver::TangentOperator<dim, double>>;
     std::unique_ptr<TangentMultigrid>               tangent_multigrid; // built at the first step
+    // Inexact Newton: the residual reduction the next matrix-free correction needs (set by Newton),
+    // at most newton_forcing_max. Measured on cases/benchmarks/flexure_finite_strain.prm at 20.7k
+    // DoFs (6 load steps): 0.1 left the first correction after each step's predictor so poor
+    // that Newton took 45 iterations and the step control 7 steps, against 30 and 6 solved to
+    // 1e-8; 1e-2 took 32 Newton iterations, 288 CG iterations against 646, and the same answer.
+    static constexpr double newton_forcing_max = 1e-2;
+    double                  linear_forcing     = 1e-8;
+    // The lagged preconditioner: CG iterations per decade of residual reduction right after the
+    // last rebuild, and whether the latest solve was so much slower that the next rebuilds it.
+    // Rebuilt when a lagged solve needs more than this factor (plus one) of those iterations:
+    // 5 builds in 32 Newton steps on the benchmark above, 288 CG iterations; never rebuilt, 395.
+    double                  preconditioner_rate                = 0;
+    bool                    preconditioner_stale               = true;
+    static constexpr double lagged_preconditioner_slowdown     = 1.5;
     mutable dealii::PETScWrappers::MPI::SparseMatrix tangent;
     std::map<int, std::vector<std::string>>          follower_pressures; // per boundary id
     std::map<int, dealii::Tensor<1, dim>>            dead_tractions;

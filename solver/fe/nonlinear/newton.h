@@ -5,6 +5,7 @@
 // supply the system; the unit tests drive it with a few unknowns.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <functional>
@@ -47,7 +48,34 @@ namespace compliant
     // a plain decrease test rejects good steps of slender structures, whose residual rises for an
     // iteration before it collapses.
     double blow_up_factor = 1e3;
+    // Inexact Newton: an iterative linear solver need only reduce the residual by a forcing term
+    // eta, loose far from the answer and tight near it (forcing_term below). 0: every correction
+    // is solved to the system's own tolerance.
+    double forcing_max = 0;
   };
+
+  // Eisenstat & Walker's (1996) forcing term, their choice 2 with Kelley's safeguards
+  // ("Iterative Methods for Linear and Nonlinear Equations", 1995, sec. 6.3): gamma (r/r_prev)^2,
+  // no sharper than gamma eta_prev^2 while that is above 0.1 (one lucky ratio must not make the
+  // next solve needlessly exact), at most forcing_max, and at least half the residual Newton still
+  // has to remove (a tighter solve is wasted: the iteration stops below `absolute_tolerance`).
+  // iteration 0 (no ratio yet): forcing_max.
+  inline double forcing_term(const unsigned int iteration, const double residual,
+                             const double previous_residual, const double previous_eta,
+                             const double absolute_tolerance, const double forcing_max)
+  {
+    constexpr double gamma = 0.9;
+    if (iteration == 0 || !(previous_residual > 0))
+      return forcing_max;
+    const double ratio = residual / previous_residual;
+    double       eta   = gamma * ratio * ratio;
+    if (gamma * previous_eta * previous_eta > 0.1)
+      eta = std::max(eta, gamma * previous_eta * previous_eta);
+    eta = std::min(eta, forcing_max);
+    if (residual > 0)
+      eta = std::max(eta, 0.5 * absolute_tolerance / residual);
+    return std::min(eta, forcing_max);
+  }
 
   // What Newton needs of a problem at a fixed load (or any fixed parameter).
   template <typename VectorType>
@@ -77,6 +105,9 @@ namespace compliant
     virtual double norm(const VectorType &v) const = 0;
     // Asked before every iteration; true stops with RunInterrupted.
     virtual bool stop_requested() { return false; }
+    // The next correction need only reduce the linearization's residual by eta (inexact Newton,
+    // NewtonSettings::forcing_max > 0). Direct solvers ignore it.
+    virtual void set_forcing(double /*eta*/) {}
   };
 
   // Newton from u (updated in place on success). Throws StepFailure when it does not converge and
@@ -86,6 +117,7 @@ namespace compliant
                             const NewtonSettings &settings)
   {
     NewtonReport report;
+    double       previous_residual = 0, eta = settings.forcing_max;
     for (unsigned int it = 0; it < settings.max_iterations; ++it)
       {
         if (system.stop_requested())
@@ -104,6 +136,13 @@ namespace compliant
           }
         if (!std::isfinite(r))
           throw StepFailure("the residual is not finite");
+        if (settings.forcing_max > 0)
+          {
+            eta = forcing_term(it, r, previous_residual, eta,
+                               settings.residual_tolerance * report.residual_scale, settings.forcing_max);
+            system.set_forcing(eta);
+          }
+        previous_residual      = r;
         const double reference = system.solve_correction(du);
         // Backtracking only against a step that inverts elements or blows the residual up by
         // orders of magnitude.

@@ -22,6 +22,11 @@ namespace softening_spring
     double                load;
     double                invalid_above         = 1e300;
     double                first_tangent_scale   = 1;
+    // An inexact linear solver as poor as inexact Newton allows: the correction leaves the
+    // fraction eta (the forcing term) of the residual unsolved.
+    bool                  inexact               = false;
+    double                eta                   = 0;
+    std::vector<double>   forcing_terms;
     std::function<bool()> stop                  = [] { return false; };
     std::vector<double>   residuals;
     double                residual = 0, tangent = 1;
@@ -45,12 +50,17 @@ namespace softening_spring
     }
     double solve_correction(double &du) override
     {
-      du = residual / tangent;
+      du = (inexact ? 1 - eta : 1.) * residual / tangent;
       return std::abs(residual);
     }
     double trial_residual(const double &u) override { return std::abs(evaluate(u)); }
     void   add_correction(double &u, double alpha, const double &du) const override { u += alpha * du; }
     double norm(const double &v) const override { return std::abs(v); }
     bool   stop_requested() override { return stop(); }
+    void   set_forcing(double forcing) override
+    {
+      eta = forcing;
+      forcing_terms.push_back(forcing);
+    }
   };
 } // namespace softening_spring

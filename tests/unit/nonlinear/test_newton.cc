@@ -102,3 +102,43 @@ TEST(Newton, WaitsUntilTheProblemIsSettled)
   EXPECT_EQ(report.iterations, 6u);
   EXPECT_NEAR(ss::force(u), 0.15, 1e-12);
 }
+
+// Eisenstat-Walker's choice 2: the square of the residual ratio, kept from collapsing after one
+// lucky ratio, at most the maximum, and never tighter than half the residual still to remove.
+TEST(Newton, ForcingTermFollowsEisenstatWalkerWithSafeguards)
+{
+  EXPECT_EQ(forcing_term(0, 1., 0., 0., 1e-9, 1e-2), 1e-2);               // no ratio yet
+  EXPECT_NEAR(forcing_term(3, 1e-2, 1., 1e-3, 1e-12, 1e-1), 0.9e-4, 1e-15); // 0.9 (r / r_prev)^2
+  EXPECT_EQ(forcing_term(3, 0.9, 1., 1e-3, 1e-12, 1e-2), 1e-2);            // slow: the maximum
+  // A lucky ratio after a loose solve (0.9 * 0.5^2 > 0.1): no sharper than 0.9 eta_prev^2.
+  EXPECT_NEAR(forcing_term(3, 1e-6, 1., 0.5, 1e-12, 1.), 0.9 * 0.25, 1e-15);
+  // Close to the tolerance: half of what is left to remove, not the quadratic 0.9e-8.
+  EXPECT_NEAR(forcing_term(4, 1e-4, 1., 1e-3, 1e-8, 1e-1), 0.5e-4, 1e-15);
+}
+
+// Inexact Newton with corrections as poor as the forcing terms allow still reaches the tolerance,
+// within two iterations of exact Newton, and asks for loose solves far from the answer.
+TEST(Newton, InexactCorrectionsConvergeWithinTwoIterationsOfExactOnes)
+{
+  NewtonSettings settings;
+  settings.residual_tolerance = 1e-12;
+  ss::System exact_system(0.19);
+  double     u_exact = 0, du = 0;
+  const auto exact = newton_solve(exact_system, u_exact, du, settings);
+
+  settings.forcing_max = 1e-2;
+  ss::System system(0.19);
+  system.inexact = true;
+  double     u   = 0;
+  const auto inexact = newton_solve(system, u, du, settings);
+  EXPECT_NEAR(ss::force(u), 0.19, 1e-12 * 0.19);
+  EXPECT_NEAR(u, u_exact, 1e-10);
+  EXPECT_LE(inexact.iterations, exact.iterations + 2);
+  ASSERT_FALSE(system.forcing_terms.empty());
+  EXPECT_EQ(system.forcing_terms.front(), 1e-2);
+  for (const double eta : system.forcing_terms)
+    {
+      EXPECT_LE(eta, 1e-2);
+      EXPECT_GT(eta, 0.);
+    }
+}
