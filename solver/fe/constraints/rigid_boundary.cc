@@ -1,5 +1,6 @@
 #include "constraints/rigid_boundary.h"
 
+#include "discretization/face_nodes.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
@@ -70,7 +71,6 @@ namespace compliant
     const auto &base = fe.base_element(0); // the displacement's FE_Q (a mixed element adds a pressure)
     const Quadrature<dim> support(base.get_unit_support_points());
     FEValues<dim>         fe_values(mapping, fe, support, update_quadrature_points);
-    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell()), face_dofs;
     constexpr unsigned int               record = 8; // d0 d1 d2 x y z hanging unused
     std::vector<double>                  local;
     for (const auto &cell : dofs.active_cell_iterators())
@@ -78,26 +78,18 @@ namespace compliant
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary() && (int)cell->face(f)->boundary_id() == load.boundary_id)
             {
-              fe_values.reinit(cell);
-              cell->get_dof_indices(cell_dofs);
-              face_dofs.resize(fe.n_dofs_per_face(f));
-              cell->face(f)->get_dof_indices(face_dofs);
-              std::map<unsigned int, std::array<double, record>> nodes; // by base support point
-              for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+              for (const auto &[index, face_node] : face_nodes(cell, f, fe_values))
                 {
-                  const auto [base_and_copy, base_index] = fe.system_to_base_index(i);
-                  if (base_and_copy.first != 0 ||
-                      std::find(face_dofs.begin(), face_dofs.end(), cell_dofs[i]) == face_dofs.end())
-                    continue;
-                  auto &node = nodes[base_index];
-                  node[base_and_copy.second] = cell_dofs[i];
+                  std::array<double, record> node{};
                   for (unsigned int d = 0; d < dim; ++d)
-                    node[3 + d] = fe_values.quadrature_point(base_index)[d];
-                  if (hanging.is_constrained(cell_dofs[i]))
-                    node[6] = 1;
+                    {
+                      node[d]     = face_node.dofs[d];
+                      node[3 + d] = face_node.position[d];
+                      if (hanging.is_constrained(face_node.dofs[d]))
+                        node[6] = 1;
+                    }
+                  local.insert(local.end(), node.begin(), node.end());
                 }
-              for (const auto &[index, node] : nodes)
-                local.insert(local.end(), node.begin(), node.end());
             }
     std::map<types::global_dof_index, std::array<double, record>> all_nodes; // by first DoF
     for (const auto &part : Utilities::MPI::all_gather(communicator, local))

@@ -1,5 +1,7 @@
 #include "contact/contact_set.h"
 
+#include "discretization/face_nodes.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 
@@ -53,7 +55,7 @@ namespace compliant
     const Quadrature<dim> support(base.get_unit_support_points());
     FEValues<dim>         fe_values(mapping, fe, support, update_quadrature_points);
     FEFaceValues<dim>     face_values(mapping, fe, face_quadrature, update_values | update_JxW_values);
-    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell()), face_dofs;
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     std::map<types::global_dof_index, Node> by_dof; // by the node's x DoF
     std::set<types::global_dof_index>       left_out;
     PETScWrappers::MPI::Vector              area(owned, communicator);
@@ -70,24 +72,9 @@ namespace compliant
             const bool is_excluded = excluded.count(id) > 0;
             if (!is_excluded && std::find(allowed.begin(), allowed.end(), true) == allowed.end())
               continue;
-            fe_values.reinit(cell);
-            cell->get_dof_indices(cell_dofs);
-            face_dofs.resize(fe.n_dofs_per_face(f));
-            cell->face(f)->get_dof_indices(face_dofs);
-            std::map<unsigned int, Node> on_face; // by base support point
-            for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+            for (const auto &[index, face_node] : face_nodes(cell, f, fe_values))
               {
-                const auto [base_and_copy, base_index] = fe.system_to_base_index(i);
-                if (base_and_copy.first != 0 ||
-                    std::find(face_dofs.begin(), face_dofs.end(), cell_dofs[i]) == face_dofs.end())
-                  continue;
-                Node &node                     = on_face[base_index];
-                node.dofs[base_and_copy.second] = cell_dofs[i];
-                node.reference                  = fe_values.quadrature_point(base_index);
-                node.allowed                    = allowed;
-              }
-            for (const auto &[index, node] : on_face)
-              {
+                const Node node{face_node.dofs, face_node.position, allowed};
                 if (is_excluded)
                   left_out.insert(node.dofs[0]);
                 auto [it, inserted] = by_dof.emplace(node.dofs[0], node);
@@ -98,6 +85,7 @@ namespace compliant
             // The lumped area of each node: the integral of its shape function over the face.
             if (cell->is_locally_owned() && !is_excluded)
               {
+                cell->get_dof_indices(cell_dofs);
                 face_values.reinit(cell, f);
                 for (unsigned int i = 0; i < cell_dofs.size(); ++i)
                   if (fe.system_to_base_index(i).first == std::make_pair(0u, 0u))
