@@ -152,7 +152,7 @@ elif mode == "matrix_free":
               "%s: Newton iterations within two of MUMPS's" % title)
         check(0 < builds < qf["newton_iterations"], "%s: the preconditioner is rebuilt less often than Newton steps" % title)
         if "3D" in title:
-            readme_figure(qf["newton_iterations"], "30", "%s: Newton iterations" % title)
+            readme_figure(qd["newton_iterations"], "30", "%s: MUMPS's Newton iterations" % title)
             readme_figure(per_step, "9.1", "%s: CG iterations per Newton step" % title)
 elif mode == "plane_stress_pressure":
     # Follower pressure in plane stress: the loaded edge times the thickness stretch. Small
