@@ -3,6 +3,7 @@
 #include <deal.II/base/timer.h>
 
 #include "discretization/degree_transfer.h"
+#include "fast_solver/coarse_level_solver.h"
 #include "mesh/memory_estimate.h"
 #include "quantities/comparison.h"
 
@@ -69,25 +70,51 @@ namespace compliant
     else
       {
         const std::function<void(LinearElasticProblem<dim> &)> warm_start = [&](LinearElasticProblem<dim> &problem) {
-          if (!primal || !by_degree || problem.solver_method != SolverMethod::matrix_free)
+          if (!primal)
+            return;
+          problem.warm_start_reduction = enriched_solve_reduction;
+          if (!by_degree)
+            {
+              // Simplices at degree 2: two-level CG from the unrefined model, its MUMPS factor below.
+              problem.coarse_twin    = primal;
+              estimates.warm_started = primal->factorization != nullptr;
+              return;
+            }
+          if (problem.solver_method != SolverMethod::matrix_free)
             return;
           estimates.warm_started =
             interpolate_to_finer_degree<dim>(*primal, primal->solution, problem, problem.warm_start);
           problem.reused_degree_one_level = primal->degree_one_level;
-          problem.warm_start_reduction = enriched_solve_reduction;
+          // A degree-1 model solved by MUMPS: its factor is the degree-2 multigrid's exact coarse solve.
+          if (!problem.reused_degree_one_level && primal->factorization && primal->fe->degree == 1 &&
+              primal->solver_method == SolverMethod::direct)
+            problem.reused_degree_one_level =
+              fast_solver::degree_one_level_from_factor<dim>(primal->dof_handler, primal->factorization,
+                                                             primal->communicator);
         };
         auto model = solve_linear_static_model<dim>(enriched_context, enriched, false, warm_start);
         plus       = model.quantities;
         estimates.dual_solve_seconds = model.problem->statistics.solve_seconds;
         estimates.dual_iterations    = model.problem->statistics.iterations;
-        if (estimates.warm_started)
+        if (model.problem->coarse_twin)
+          estimates.warm_started = model.problem->solver_note.rfind("two-level CG", 0) == 0;
+        if (estimates.warm_started && !by_degree)
+          {
+            std::ostringstream reduction;
+            reduction << enriched_solve_reduction;
+            estimates.how += ", solved by two-level CG from the model's solution (the model's MUMPS factor as "
+                             "its coarse level) to a residual reduction of " + reduction.str();
+          }
+        else if (estimates.warm_started)
           {
             std::ostringstream reduction;
             reduction << enriched_solve_reduction;
             estimates.how += ", solved from the degree-p solution to a residual reduction of " + reduction.str();
           }
         if (model.problem->statistics.degree_one_reused)
-          estimates.how += ", its multigrid's degree-1 level (matrix and AMG) the model's own";
+          estimates.how += primal && primal->fe->degree == 1 ?
+                             ", its multigrid's degree-1 level the model's own matrix and MUMPS factor" :
+                             ", its multigrid's degree-1 level (matrix and AMG) the model's own";
         try
           {
             add_derived_quantities(parameters.derived, plus, model.problem->expression_variables());

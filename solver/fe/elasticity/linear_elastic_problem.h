@@ -127,6 +127,12 @@ namespace compliant
     // MUMPS: the factor of the last solve, kept until the next assembly, so that a dual of the
     // same matrix (goal-oriented refinement) is a back-substitution.
     std::shared_ptr<DirectFactorization> factorization;
+    // Set before solve() on the error estimates' once-refined model (simplices at their highest
+    // degree): the same case's model on the unrefined mesh, solved by MUMPS. The solve is then CG
+    // preconditioned by smoothing here and that model's factor below (linear_algebra/
+    // two_level_solver.h), from its solution carried here, to warm_start_reduction; as before
+    // where the meshes are not twins (solver_note says why) or CG does not converge.
+    const LinearElasticProblem<dim> *coarse_twin = nullptr;
     // Set before solve() by whoever solves duals of this matrix (goal-oriented refinement): the
     // matrix-free p-multigrid is then kept and serves them, set-up and all.
     bool keep_solver_for_duals = false;
@@ -151,6 +157,8 @@ namespace compliant
     bool solve_matrix_free(dealii::PETScWrappers::MPI::Vector &x);
     // MUMPS LU of system_matrix, factored at the first solve after an assembly; returns 1.
     unsigned int solve_direct(dealii::PETScWrappers::MPI::Vector &x);
+    // The two-level solve from coarse_twin; false (x zero) where it does not apply or fails.
+    bool solve_from_coarse_twin(dealii::PETScWrappers::MPI::Vector &x);
     // Traction from Loads/Traction and Loads/Total force, per boundary id.
     std::map<int, dealii::Tensor<1, dim>> boundary_tractions() const;
     double boundary_measure(int boundary_id) const;

@@ -86,14 +86,15 @@ namespace compliant
   {
     Timer                      timer;
     PETScWrappers::MPI::Vector x(locally_owned_dofs, communicator);
-    if (solver_method == SolverMethod::matrix_free && !solve_matrix_free(x))
+    const bool                 solved = solve_from_coarse_twin(x);
+    if (!solved && solver_method == SolverMethod::matrix_free && !solve_matrix_free(x))
       {
         // 'auto' only: the iterative method struggled (very thin cells); MUMPS is exact.
         solver_method = SolverMethod::direct;
         allocate_matrix();
         assemble();
       }
-    if (solver_method != SolverMethod::matrix_free)
+    if (!solved && solver_method != SolverMethod::matrix_free)
       {
         const bool iterative = solver_method != SolverMethod::direct;
         const auto modes     = iterative ? rigid_body_modes(*mapping, dof_handler, communicator) :

@@ -2,7 +2,12 @@
 
 #include "linear_algebra/petsc_linear_solver.h"
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_accessor.h>
+#include <deal.II/fe/fe.h>
+
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace compliant::fast_solver
@@ -50,6 +55,14 @@ namespace compliant::fast_solver
     check(KSPSetUp(ksp), "KSPSetUp (GAMG set-up)");
   }
 
+  CoarseLevelSolver::CoarseLevelSolver(std::shared_ptr<const DirectFactorization> factor_in,
+                                       const dealii::IndexSet &owned, MPI_Comm communicator)
+    : factor(std::move(factor_in))
+  {
+    rhs.reinit(owned, communicator);
+    correction.reinit(owned, communicator);
+  }
+
   CoarseLevelSolver::~CoarseLevelSolver()
   {
     if (ksp)
@@ -67,9 +80,14 @@ namespace compliant::fast_solver
         values[i] = src.local_element(i);
       VecRestoreArray(rhs, &values);
     }
-    check(KSPSolve(ksp, rhs, correction), "KSPSolve");
     PetscInt iterations = 0;
-    KSPGetIterationNumber(ksp, &iterations);
+    if (factor)
+      factor->solve(correction, rhs);
+    else
+      {
+        check(KSPSolve(ksp, rhs, correction), "KSPSolve");
+        KSPGetIterationNumber(ksp, &iterations);
+      }
     total_iterations += std::max<PetscInt>(iterations, 1);
     const PetscScalar *values;
     VecGetArrayRead(correction, &values);
@@ -77,4 +95,69 @@ namespace compliant::fast_solver
       dst.local_element(i) = values[i];
     VecRestoreArrayRead(correction, &values);
   }
+
+  template <int dim>
+  std::vector<double> degree_one_fingerprint(const dealii::DoFHandler<dim> &dofs, MPI_Comm communicator)
+  {
+    std::vector<double>                          sums(dim + 1, 0.);
+    std::vector<dealii::types::global_dof_index> indices(dofs.get_fe().n_dofs_per_cell());
+    std::vector<bool>                            seen(dofs.locally_owned_dofs().n_elements(), false);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(indices);
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            if (dofs.locally_owned_dofs().is_element(indices[i]))
+              {
+                const auto local = dofs.locally_owned_dofs().index_within_set(indices[i]);
+                if (seen[local])
+                  continue;
+                seen[local]   = true;
+                const auto &x = cell->vertex(dofs.get_fe().system_to_component_index(i).second);
+                for (unsigned int d = 0; d < dim; ++d)
+                  sums[d] += (indices[i] + 1.) * x[d];
+                sums[dim] += 1;
+              }
+        }
+    dealii::Utilities::MPI::sum(sums, communicator, sums);
+    sums.push_back(dofs.n_dofs());
+    return sums;
+  }
+
+  template <int dim>
+  std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor(const dealii::DoFHandler<dim>             &dofs,
+                                                               std::shared_ptr<const DirectFactorization> factor,
+                                                               MPI_Comm communicator)
+  {
+    auto level         = std::make_shared<DegreeOneLevel>();
+    level->owned       = dofs.locally_owned_dofs();
+    level->solver      = std::make_unique<CoarseLevelSolver>(std::move(factor), level->owned, communicator);
+    level->fingerprint = degree_one_fingerprint(dofs, communicator);
+    level->direct      = true;
+    return level;
+  }
+
+  template <int dim>
+  bool degree_one_level_fits(const DegreeOneLevel &level, const dealii::DoFHandler<dim> &dofs,
+                             const std::vector<double> &fingerprint, MPI_Comm communicator)
+  {
+    const bool numbered_alike =
+      level.fingerprint.size() == fingerprint.size() &&
+      std::equal(fingerprint.begin(), fingerprint.end(), level.fingerprint.begin(), [](const double a, const double b) {
+        return std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b));
+      });
+    const bool owned_alike = level.owned == dofs.locally_owned_dofs();
+    return numbered_alike && dealii::Utilities::MPI::min(owned_alike ? 1 : 0, communicator) == 1;
+  }
+
+  template std::vector<double> degree_one_fingerprint<2>(const dealii::DoFHandler<2> &, MPI_Comm);
+  template std::vector<double> degree_one_fingerprint<3>(const dealii::DoFHandler<3> &, MPI_Comm);
+  template std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor<2>(
+    const dealii::DoFHandler<2> &, std::shared_ptr<const DirectFactorization>, MPI_Comm);
+  template std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor<3>(
+    const dealii::DoFHandler<3> &, std::shared_ptr<const DirectFactorization>, MPI_Comm);
+  template bool degree_one_level_fits<2>(const DegreeOneLevel &, const dealii::DoFHandler<2> &,
+                                         const std::vector<double> &, MPI_Comm);
+  template bool degree_one_level_fits<3>(const DegreeOneLevel &, const dealii::DoFHandler<3> &,
+                                         const std::vector<double> &, MPI_Comm);
 } // namespace compliant::fast_solver

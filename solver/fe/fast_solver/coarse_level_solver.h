@@ -5,12 +5,15 @@
 // where GAMG needs tens of iterations per coarse solve and the degree-1 system is small.
 #pragma once
 
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 #include <deal.II/multigrid/mg_base.h>
 
 #include <petscksp.h>
+
+#include "linear_algebra/direct_factorization.h"
 
 #include <memory>
 #include <string>
@@ -30,6 +33,10 @@ namespace compliant::fast_solver
                       std::vector<dealii::PETScWrappers::MPI::Vector> rigid_body_modes,
                       unsigned int block_size, bool direct, double relative_tolerance,
                       const std::string &petsc_options);
+    // An existing factor of the same degree-1 system (a degree-1 model solved by MUMPS), kept
+    // alive here; owned: its rows on this rank.
+    CoarseLevelSolver(std::shared_ptr<const DirectFactorization> factor, const dealii::IndexSet &owned,
+                      MPI_Comm communicator);
     ~CoarseLevelSolver() override;
     CoarseLevelSolver(const CoarseLevelSolver &)            = delete;
     CoarseLevelSolver &operator=(const CoarseLevelSolver &) = delete;
@@ -41,6 +48,7 @@ namespace compliant::fast_solver
 
   private:
     KSP                                        ksp = nullptr;
+    std::shared_ptr<const DirectFactorization> factor; // instead of ksp
     mutable dealii::PETScWrappers::MPI::Vector rhs, correction;
     mutable unsigned int                       total_iterations = 0;
   };
@@ -54,6 +62,25 @@ namespace compliant::fast_solver
     dealii::PETScWrappers::MPI::SparseMatrix matrix;
     std::unique_ptr<CoarseLevelSolver>       solver;
     std::vector<double>                      fingerprint;
+    dealii::IndexSet                         owned; // the degree-1 DoFs of this rank
     bool                                     direct = false;
   };
+
+  // Sums over the owned DoFs of (index + 1) times each coordinate of the DoF's vertex, and the
+  // DoF count: equal on two degree-1 DoFHandlers exactly when they number the same vertices alike.
+  template <int dim>
+  std::vector<double> degree_one_fingerprint(const dealii::DoFHandler<dim> &dofs, MPI_Comm communicator);
+
+  // The degree-1 level of a degree-1 model solved by MUMPS: its matrix's factor serves as the
+  // exact coarse solve of the degree-2 model on the same mesh (the error estimates' enriched one).
+  template <int dim>
+  std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor(const dealii::DoFHandler<dim>             &dofs,
+                                                               std::shared_ptr<const DirectFactorization> factor,
+                                                               MPI_Comm communicator);
+
+  // Whether `level` (kept from another solver) serves these degree-1 DoFs: the same numbering
+  // and, on every rank, the same owned DoFs.
+  template <int dim>
+  bool degree_one_level_fits(const DegreeOneLevel &level, const dealii::DoFHandler<dim> &dofs,
+                             const std::vector<double> &fingerprint, MPI_Comm communicator);
 } // namespace compliant::fast_solver

@@ -51,38 +51,6 @@ namespace compliant::fast_solver
     MGSmootherPrecondition<Operator, SmootherType, VectorType> smoother;
   };
 
-  namespace
-  {
-    // Sums over the owned DoFs of (index + 1) times each coordinate of the DoF's vertex: equal on
-    // two DoFHandlers exactly when they number the same vertices alike (to round-off).
-    template <int dim>
-    std::vector<double> degree_one_fingerprint(const DoFHandler<dim> &dofs, MPI_Comm communicator)
-    {
-      std::vector<double>              sums(dim + 1, 0.);
-      std::vector<types::global_dof_index> indices(dofs.get_fe().n_dofs_per_cell());
-      std::vector<bool>                seen(dofs.locally_owned_dofs().n_elements(), false);
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(indices);
-            for (unsigned int i = 0; i < indices.size(); ++i)
-              if (dofs.locally_owned_dofs().is_element(indices[i]))
-                {
-                  const auto local = dofs.locally_owned_dofs().index_within_set(indices[i]);
-                  if (seen[local])
-                    continue;
-                  seen[local]   = true;
-                  const auto &x = cell->vertex(dofs.get_fe().system_to_component_index(i).second);
-                  for (unsigned int d = 0; d < dim; ++d)
-                    sums[d] += (indices[i] + 1.) * x[d];
-                  sums[dim] += 1;
-                }
-          }
-      Utilities::MPI::sum(sums, communicator, sums);
-      sums.push_back(dofs.n_dofs());
-      return sums;
-    }
-  } // namespace
 
   template <int dim, typename Operator>
   PMultigridSolver<dim, Operator>::PMultigridSolver(const Mapping<dim>       &mapping,
@@ -149,11 +117,7 @@ namespace compliant::fast_solver
 
     const auto fingerprint = degree_one_fingerprint(*L.dofs[0], communicator);
     const auto &reused     = settings.reused_degree_one_level;
-    stats.coarse_reused    = reused && reused->fingerprint.size() == fingerprint.size() &&
-                          std::equal(fingerprint.begin(), fingerprint.end(), reused->fingerprint.begin(),
-                                     [](const double a, const double b) {
-                                       return std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b));
-                                     });
+    stats.coarse_reused    = reused && degree_one_level_fits(*reused, *L.dofs[0], fingerprint, communicator);
     if (stats.coarse_reused)
       L.coarse = reused, stats.coarse_direct = reused->direct;
     else
@@ -196,6 +160,7 @@ namespace compliant::fast_solver
                                                          stats.coarse_direct, settings.coarse_tolerance,
                                                          settings.petsc_options);
     coarse->fingerprint = fingerprint.empty() && L.coarse ? L.coarse->fingerprint : fingerprint;
+    coarse->owned       = L.dofs[0]->locally_owned_dofs();
     coarse->direct      = stats.coarse_direct;
     L.coarse            = std::move(coarse);
   }

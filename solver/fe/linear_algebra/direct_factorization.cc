@@ -61,6 +61,11 @@ namespace compliant
 
   void DirectFactorization::solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const
   {
+    solve(static_cast<Vec>(x), static_cast<Vec>(b));
+  }
+
+  void DirectFactorization::solve(Vec x, Vec b) const
+  {
     check(KSPSolve(ksp, b, x), "KSPSolve");
     KSPConvergedReason reason;
     KSPGetConvergedReason(ksp, &reason);

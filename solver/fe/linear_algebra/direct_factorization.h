@@ -24,6 +24,8 @@ namespace compliant
     // with_options: 'Linear solver/PETSc options' (inserted by the caller) apply to the solver.
     void factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, bool symmetric, bool with_options = false);
     void solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const;
+    // The same on bare PETSc vectors (a preconditioner's coarse level); x and b distinct.
+    void solve(Vec x, Vec b) const;
     // Negative eigenvalues of the factored matrix; only for a symmetric one.
     unsigned int negative_eigenvalues() const;
 
