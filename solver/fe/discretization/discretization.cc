@@ -131,6 +131,9 @@ namespace compliant
   void Discretization<dim>::choose_element(const bool with_pressure)
   {
     const unsigned int degree = parameters.element_degree;
+    // Discretization/Curved mapping degree; 0: isoparametric.
+    const unsigned int curved_degree =
+      parameters.curved_mapping_degree > 0 ? parameters.curved_mapping_degree : degree;
     if (triangulation.all_reference_cells_are_hyper_cube())
       {
         if (with_pressure)
@@ -143,12 +146,12 @@ namespace compliant
             imperfection_field = std::make_unique<ImperfectionField>(triangulation);
             imperfection_field->dofs.distribute_dofs(FESystem<dim>(FE_Q<dim>(imperfection->degree), dim));
             fill_shift(*imperfection, imperfection_field->dofs, imperfection_field->shift, communicator);
-            perfect_mapping = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
+            perfect_mapping = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, curved_degree));
             mapping = shifted_mapping_of(imperfection_field->dofs, imperfection_field->shift,
-                                         std::max(mapping_degree(geometry.curved, degree), imperfection->degree));
+                                         std::max(mapping_degree(geometry.curved, curved_degree), imperfection->degree));
           }
         else
-          mapping = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, degree));
+          mapping = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, curved_degree));
         quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
         face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
       }

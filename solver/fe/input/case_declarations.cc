@@ -108,6 +108,16 @@ namespace compliant
                           "elements keep their order on holes and notches. .msh meshes, and any "
                           "entity gmsh cannot evaluate, are straight-sided, as the log says. "
                           "false: every cell straight-sided.");
+        prm.declare_entry("Curved mapping degree", "0", Patterns::Integer(0, 6),
+                          "Degree of the geometry mapping of quadrilaterals and hexahedra on curved "
+                          "boundaries. 0: the element degree (isoparametric). One above it "
+                          "(superparametric, e.g. 3 with Element degree = 2) takes the boundary's "
+                          "interpolation error out of stresses at strongly curved edges: at the tip of "
+                          "an elliptical hole the quadratic boundary is blunter than the ellipse and "
+                          "adds an h^2 stress error of the opposite sign to the field's, so Q2 shows no "
+                          "clean order there until the mapping is cubic "
+                          "(cases/verification/elliptical_hole.md). Straight-sided meshes are mapped "
+                          "at degree 1, triangles and tetrahedra at 2 at most.");
         prm.declare_entry("Mesh partition", "auto", Patterns::Selection("auto|shared|distributed"),
                           "How the mesh is spread over MPI ranks. shared: every rank holds the "
                           "whole mesh and owns a METIS part. distributed: each rank holds only its "

@@ -315,6 +315,7 @@ namespace compliant
     p.global_refinements = prm.get_integer("Global refinements");
     p.mesh_partition     = partition_request_from_string(prm.get("Mesh partition"));
     p.curved_boundaries  = prm.get_bool("Curved boundaries");
+    p.curved_mapping_degree = prm.get_integer("Curved mapping degree");
     p.formulation        = prm.get("Formulation") == "mixed" ? Formulation::mixed : Formulation::displacement;
     prm.leave_subsection();
 

@@ -59,6 +59,9 @@ namespace compliant
     unsigned int global_refinements = 0;
     PartitionRequest mesh_partition = PartitionRequest::automatic;
     bool         curved_boundaries  = true;   // circles, cylinders, spheres follow the geometry
+    // Degree of the mapping of quadrilaterals/hexahedra where a boundary is curved; 0: the
+    // element's (isoparametric).
+    unsigned int curved_mapping_degree = 0;
     Formulation  formulation        = Formulation::displacement; // linear analyses
     // Local refinements after the global ones, one set of refine flags (per active cell) per
     // cycle: set by the model ladder's adaptive rungs, never read from the case file.
