@@ -75,9 +75,9 @@ namespace compliant
           problem.warm_start_reduction = enriched_solve_reduction;
           if (!by_degree)
             {
-              // Simplices at degree 2: two-level CG from the unrefined model, its MUMPS factor below.
-              problem.coarse_twin    = primal;
-              estimates.warm_started = primal->factorization != nullptr;
+              // Simplices at degree 2: two-level CG from the unrefined model, its MUMPS factor below
+              // (whether it ran is read from the solve afterwards).
+              problem.coarse_twin = primal;
               return;
             }
           if (problem.solver_method != SolverMethod::matrix_free)
