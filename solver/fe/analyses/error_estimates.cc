@@ -8,6 +8,7 @@
 #include "quantities/comparison.h"
 
 #include <cmath>
+#include <set>
 #include <tuple>
 #include <iostream>
 #include <sstream>
@@ -21,7 +22,14 @@ namespace compliant
       return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
     };
     if (starts("n_") || starts("time_") || starts("solver_") || starts("eigen") || ends("_error_estimate") ||
-        ends("_error_estimate_absolute"))
+        ends("_error_estimate_absolute") || starts("error_estimate_") || starts("contact_nodes_"))
+      return false;
+    // A path's counts and where it stands are not values of the model to converge.
+    static const std::set<std::string> path_records = {
+      "load_factor", "load_steps", "step_cutbacks", "newton_iterations", "linear_solves", "linear_iterations",
+      "preconditioner_builds", "contact_active_nodes", "contact_max_penetration", "contact_penetration_tolerance",
+      "last_stable_load_factor", "limit_points", "bifurcations"};
+    if (path_records.count(name) != 0)
       return false;
     // Where a peak lies (max_von_mises_x, max_von_mises_in_<body>_x) is a place, not a value to converge.
     if (starts("max_") && (ends("_x") || ends("_y") || ends("_z")))

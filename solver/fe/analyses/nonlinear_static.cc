@@ -1,7 +1,5 @@
 #include "analyses/nonlinear_static.h"
 
-#include "analyses/error_estimates.h"
-
 #include "analyses/buckling_parts.h"
 #include "analyses/interruption.h"
 #include "analyses/response_curve.h"
@@ -11,6 +9,7 @@
 
 #include "constraints/extra_constraints.h"
 #include "contact/contact_obstacle.h"
+#include "discretization/degree_transfer.h"
 #include "finite_strain/finite_strain_load_path.h"
 #include "finite_strain/finite_strain_problem.h"
 #include "nonlinear/load_stepping.h"
@@ -229,6 +228,39 @@ namespace compliant
       return outcome;
     }
 
+    // The state of `from` (same case and mesh, a lower degree) carried to the problem, then Newton
+    // at from's load factor: for a hyperelastic body the end of the same path. false, with the
+    // problem unloaded again, where the state cannot be carried or Newton fails from it.
+    template <int dim>
+    bool solve_from_state(FiniteStrainProblem<dim> &problem, const FiniteStrainProblem<dim> &from,
+                          const StepRecorder &record, const bool root, PathOutcome &outcome)
+    {
+      dealii::PETScWrappers::MPI::Vector carried;
+      if (!interpolate_to_finer_degree<dim>(from, from.solution, problem, carried) ||
+          problem.rigid_boundaries.size() != from.rigid_boundaries.size())
+        return false;
+      const dealii::PETScWrappers::MPI::Vector unloaded = problem.solution;
+      problem.restore(carried, from.load_factor);
+      for (unsigned int b = 0; b < problem.rigid_boundaries.size(); ++b)
+        problem.rigid_boundaries[b].continue_rotation_from(from.rigid_boundaries[b]);
+      try
+        {
+          const NewtonReport report = problem.solve_to(from.load_factor);
+          outcome.result.steps             = 1;
+          outcome.result.newton_iterations = report.iterations;
+          record(1, problem.load_factor, report, {});
+          return true;
+        }
+      catch (const StepFailure &e)
+        {
+          if (root)
+            std::cout << "Newton from the carried state failed (" << e.what() << "); following the path"
+                      << std::endl;
+          problem.restore(unloaded, 0);
+          return false;
+        }
+    }
+
     // The run's counts and timings, its critical points and the derived quantities that use them.
     template <int dim>
     void add_path_quantities(RunSummary &summary, const FiniteStrainProblem<dim> &problem,
@@ -312,7 +344,8 @@ namespace compliant
 
 
   template <int dim>
-  int run_nonlinear_static(const RunContext &context, const std::function<void(RunSummary &)> &amend_summary)
+  int run_nonlinear_static(const RunContext &context, const SummaryAmendment<dim> &amend_summary,
+                           const FiniteStrainProblem<dim> *start_from)
   {
     const auto &p    = context.parameters;
     MPI_Comm    comm = context.communicator;
@@ -393,8 +426,11 @@ namespace compliant
         print_step(number, load_factor, report, quantities);
       curve.add(number, load_factor, report.iterations, path_columns, quantities);
     };
-    const PathOutcome outcome =
-      follow_path(problem, settings, record, [&]() { return interruption.requested(comm); }, root, p.case_file);
+    PathOutcome outcome;
+    const bool  from_state = start_from && solve_from_state(problem, *start_from, record, root, outcome);
+    if (!from_state)
+      outcome =
+        follow_path(problem, settings, record, [&]() { return interruption.requested(comm); }, root, p.case_file);
     std::string failure = outcome.result.failure;
     if (outcome.result.interrupted)
       {
@@ -419,12 +455,14 @@ namespace compliant
     summary.settings.insert({"mesh_partition", to_string(problem.mesh_partition.partition)});
     summary.settings.insert({"status", failure.empty() ? "completed" : failure});
     summary.settings.insert({"curve", curve.file});
+    if (from_state)
+      summary.settings.insert({"path", "Newton at the end load from a lower degree's state (not followed)"});
     summary.quantities = quantities;
     summary.quantities.insert(imperfection_quantities.begin(), imperfection_quantities.end());
     add_path_quantities(summary, problem, outcome, path_derived, p.case_file);
     summary.quantities["time_total"] = timer.wall_time();
     if (amend_summary)
-      amend_summary(summary);
+      amend_summary(summary, problem);
     finish_run(context, summary, problem.expression_variables(),
                [&](const std::string &directory) { write_fields(problem, directory); },
                [&](const RunSummary &finished) { return static_pictures(problem, finished, curve.file); });
@@ -437,50 +475,8 @@ namespace compliant
     return 0;
   }
 
-  template int run_nonlinear_static<2>(const RunContext &, const std::function<void(RunSummary &)> &);
-  template int run_nonlinear_static<3>(const RunContext &, const std::function<void(RunSummary &)> &);
-
-  namespace
-  {
-    // Quantities/Error estimates at finite strain: the same path one degree up (its quantities at
-    // the last converged step) against this one's. To leading order J(u+) - J(u_p) is the DWR
-    // estimate with the dual of the tangent at the converged state on the enriched space. The
-    // enriched run writes to a scratch directory inside the output directory, removed after.
-    template <int dim>
-    int run_with_estimates(const RunContext &context)
-    {
-      const auto &p = context.parameters;
-      if (!p.error_estimates || context.check_only)
-        return run_nonlinear_static<dim>(context);
-      const auto amend = [&](RunSummary &summary) {
-        const auto estimates = estimate_quantity_errors<dim>(
-          context, p, summary.quantities, summary.settings.count("cell_type") == 0 || summary.settings.at("cell_type") == "hypercube",
-          [&](const RunContext &enriched_context, const CaseParameters &enriched) {
-            CaseParameters scratch   = enriched;
-            scratch.output_directory = p.output_directory + "/.error_estimate";
-            scratch.write_fields     = false;
-            scratch.write_pictures   = false;
-            const RunContext scratch_context{scratch, enriched_context.prm, enriched_context.geometry, false,
-                                             enriched_context.communicator};
-            Quantities       plus;
-            std::size_t      dofs = 0;
-            const int        rc = run_nonlinear_static<dim>(scratch_context, [&](RunSummary &enriched_summary) {
-              plus = enriched_summary.quantities;
-              dofs = static_cast<std::size_t>(enriched_summary.quantities.at("n_dofs"));
-            });
-            if (dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0)
-              std::filesystem::remove_all(scratch.output_directory);
-            // A path that stopped short ends elsewhere: nothing to compare.
-            if (rc != 0 || plus.count("load_factor") == 0 || summary.quantities.count("load_factor") == 0 ||
-                plus.at("load_factor") != summary.quantities.at("load_factor"))
-              plus.clear();
-            return std::make_pair(plus, dofs);
-          });
-        add_error_estimates(summary, estimates);
-      };
-      return run_nonlinear_static<dim>(context, amend);
-    }
-  } // namespace
+  template int run_nonlinear_static<2>(const RunContext &, const SummaryAmendment<2> &, const FiniteStrainProblem<2> *);
+  template int run_nonlinear_static<3>(const RunContext &, const SummaryAmendment<3> &, const FiniteStrainProblem<3> *);
 
   Analysis nonlinear_static_analysis()
   {
@@ -489,8 +485,8 @@ namespace compliant
             "subsection Finite strain)",
             declare},
             [](const RunContext &context) {
-              return context.parameters.dimension == 2 ? run_with_estimates<2>(context) :
-                                                         run_with_estimates<3>(context);
+              return context.parameters.dimension == 2 ? run_nonlinear_static_with_estimates<2>(context) :
+                                                         run_nonlinear_static_with_estimates<3>(context);
             }};
   }
 } // namespace compliant

@@ -25,10 +25,23 @@ namespace compliant
   };
   PathSettings read_path_settings(dealii::ParameterHandler &prm, const CaseParameters &p, int dim);
 
-  // The analysis itself, for the model ladder's finite-strain rungs: amend_summary, if given,
-  // sees the summary (quantities of the last converged step) before it is written and may add
-  // to it.
+  // Sees the summary (quantities of the last converged step) before it is written, with the
+  // problem at that state, and may add to it.
   template <int dim>
-  int run_nonlinear_static(const RunContext                             &context,
-                           const std::function<void(RunSummary &)> &amend_summary = {});
+  using SummaryAmendment = std::function<void(RunSummary &, const FiniteStrainProblem<dim> &)>;
+
+  // The analysis itself, for the model ladder's finite-strain rungs and the error estimates.
+  // start_from, if given, is a converged problem of the same case on the same mesh at a lower
+  // degree: its state is carried to this run's space and Newton solves at its load factor, so
+  // the run ends in the same state of a hyperelastic body without following the path again (the
+  // estimates' enriched model). Where the state cannot be carried (another mesh, the mixed
+  // formulation's discontinuous pressure) or Newton fails from it, the run follows the path.
+  template <int dim>
+  int run_nonlinear_static(const RunContext &context, const SummaryAmendment<dim> &amend_summary = {},
+                           const FiniteStrainProblem<dim> *start_from = nullptr);
+
+  // The analysis with Quantities/Error estimates: the run, then its enriched model (degree p + 1)
+  // from the run's end state (nonlinear_static_estimates.cc).
+  template <int dim>
+  int run_nonlinear_static_with_estimates(const RunContext &context);
 } // namespace compliant

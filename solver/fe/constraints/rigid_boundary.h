@@ -90,6 +90,15 @@ namespace compliant
     // The rigid motion of the boundary in the state u. Collective.
     Motion motion(const dealii::PETScWrappers::MPI::Vector &u, bool geometrically_nonlinear) const;
 
+    // Continues the reported rotation from `other`'s (the same boundary of another model of the
+    // case, at a nearby state) instead of from this one's last: a state carried from another
+    // model has no path of its own to continue a rotation past pi along.
+    void continue_rotation_from(const RigidBoundary &other)
+    {
+      last_angle    = other.last_angle;
+      last_rotation = other.last_rotation;
+    }
+
     const RigidBoundaryLoad<dim> load;
     dealii::Point<dim>           center; // reference position of the load point (the force acts
                                          // there; its displacement is reported)

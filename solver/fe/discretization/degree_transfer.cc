@@ -18,8 +18,12 @@ namespace compliant
                 fe_from.n_components() == fe_to.n_components() && fe_from.reference_cell() == fe_to.reference_cell() &&
                 fe_from.degree <= fe_to.degree;
     dealii::FullMatrix<double> interpolation(fe_to.n_dofs_per_cell(), fe_from.n_dofs_per_cell());
-    if (same)
+    // Elements without support points (the discontinuous P_p pressure of the mixed formulation)
+    // by the L2 projection on the reference cell, which is exact for nested spaces too.
+    if (same && fe_from.has_support_points() && fe_to.has_support_points())
       dealii::FETools::get_interpolation_matrix(fe_from, fe_to, interpolation);
+    else if (same)
+      dealii::FETools::get_projection_matrix(fe_from, fe_to, interpolation);
     std::vector<dealii::types::global_dof_index> indices_from(fe_from.n_dofs_per_cell()),
       indices_to(fe_to.n_dofs_per_cell()), owned_indices;
     dealii::Vector<double> values_from(fe_from.n_dofs_per_cell()), values_to(fe_to.n_dofs_per_cell());

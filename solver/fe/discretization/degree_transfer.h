@@ -1,5 +1,6 @@
 // A field of one discretization carried to another of the same mesh at a higher degree (Q_p into
-// Q_p+1, P1 into P2): exact, since V_p lies in V_p+1. The error estimates' enriched model starts
+// Q_p+1, P1 into P2, with the mixed formulation's discontinuous P_p-1 pressure into P_p): exact,
+// since V_p lies in V_p+1. The error estimates' enriched model starts
 // its iterative solve from the degree-p solution this way, so the solve only has to find the
 // (small) difference.
 #pragma once

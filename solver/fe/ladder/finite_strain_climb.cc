@@ -56,7 +56,7 @@ namespace compliant
         rung.adaptive_cycles = 0;
         dealii::Timer rung_timer;
         // The estimates join the rung's summary before it is written.
-        const auto amend = [&](RunSummary &summary) {
+        const auto amend = [&](RunSummary &summary, const FiniteStrainProblem<dim> &) {
           rung.dofs  = summary.quantities.at("n_dofs");
           last_cells = summary.quantities.at("n_cells");
           sizes.push_back(fs_planner.mesh_size(false, j, rung.dofs, dim));
