@@ -149,6 +149,7 @@ NOTES = {
 COST_RUNS = [
     ("Lame cylinder 2D, Q2, 64 x 128", "lame_cylinder.prm", [DEG(2)] + cyl_mesh(64, 128)),
     ("Lame cylinder 2D, Q1, 64 x 128", "lame_cylinder.prm", [DEG(1)] + cyl_mesh(64, 128)),
+    ("Lame cylinder 2D, Q1, 128 x 256 (CG + GAMG)", "lame_cylinder.prm", [DEG(1)] + cyl_mesh(128, 256)),
     ("Lame cylinder 2D, P2 triangles, 32 x 64", "lame_cylinder.prm",
      [DEG(2), "Geometry/Parameters/quads=0"] + cyl_mesh(32, 64)),
     ("Lame sphere, P2 tetrahedra, refined once (MUMPS)", "lame_sphere.prm",

@@ -146,6 +146,22 @@ for n, text in ((4, "0.78"), (8, "0.75")):
               % (n, k, q[k], true, q[k + "_error_estimate_absolute"], eff))
         readme_figure(eff, text, "finite strain n=%d: effectivity" % n)
 
+# The enriched model is cut like the model: on a model distributed by request (too small for auto
+# to distribute its enriched model alone) the model's solution, degree-1 level and finite-strain
+# state are still carried over.
+summary = run_case(os.path.join(cases, "lame_cylinder.prm"),
+                   ["Discretization/Element degree=1", "Discretization/Mesh partition=distributed",
+                    "Quantities/Error estimates=true"])
+how = summary["settings"].get("error_estimates", "")
+check("from the degree-p solution" in how and "the model's own matrix and MUMPS factor" in how,
+      "distributed Q1 model: the enriched solve starts from its solution, on its factor (%r)" % how)
+summary = run_case(os.path.join(cases, "cook_membrane_neo_hooke.prm"),
+                   ["Geometry/Parameters/n=4", "Discretization/Mesh partition=distributed",
+                    "Quantities/Error estimates=true", "Output/Fields=false"])
+how = summary["settings"].get("error_estimates", "")
+check("from the model's state carried up" in how,
+      "distributed finite-strain model: the enriched state from the model's (%r)" % how)
+
 # Modal (Quantities/Error estimates in a modal run): the 3D cantilever of modal_cantilever_3d.prm,
 # Q2 on 50 x 2 x 2 cells, its first six frequencies against the same model at degree 3 on the once
 # refined mesh (152607 DoFs; 0.08-0.13 % from the Q2 values, so its own error of order 0.005 % is

@@ -48,7 +48,15 @@ namespace compliant
     // Simplices stop at degree 2, the hexahedral kernels at 4: past that, refine once instead.
     const bool by_degree = parameters.element_degree < (hypercube_cells ? 4u : 2u);
     if (by_degree)
-      enriched.element_degree = parameters.element_degree + 1;
+      {
+        enriched.element_degree = parameters.element_degree + 1;
+        // The same mesh cut the same way, or the model's solution and degree-1 level cannot be
+        // carried over (auto would distribute the 4-8 times larger enriched model alone).
+        if (primal)
+          enriched.mesh_partition = primal->mesh_partition.partition == MeshPartition::distributed ?
+                                      PartitionRequest::distributed :
+                                      PartitionRequest::shared;
+      }
     else
       enriched.global_refinements = parameters.global_refinements + 1;
     estimates.dual_degree = enriched.element_degree;
