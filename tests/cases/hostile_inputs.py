@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 120 inputs.
-README_CENSUS = {"refused with exit 2": 109, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
+# The README's census of the corpus: 121 inputs.
+README_CENSUS = {"refused with exit 2": 110, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -394,7 +394,7 @@ solver_case("imperfection without an amplitude", [column_imperfect, S, "Geometry
 solver_case("imperfection in a linear analysis", [column_imperfect, S, "Geometry/Imperfection=1: 0.1",
             S, "Analysis=linear static"], ["Geometry/Imperfection", "linear static"])
 # Contact (Contact/Obstacles): a boundary the mesh lacks, an obstacle missing a parameter or of
-# an unknown kind, contact in an analysis or a path that does not solve it.
+# an unknown kind, one drawn into the part, contact in an analysis or a path that does not solve it.
 stop_case = os.path.join(root, "cases", "contact", "flexure_hinge_stop.prm")
 solver_case("contact on an unknown boundary", [stop_case, S, "Contact/Boundaries=drive_tpo"],
             ["flexure_hinge_stop.prm", "Contact/Boundaries", "drive_tpo"])
@@ -402,6 +402,9 @@ solver_case("contact obstacle without its radius", [stop_case, S, "Contact/Obsta
             ["flexure_hinge_stop.prm", "Contact/Obstacles", "pin", "radius"])
 solver_case("contact obstacle of an unknown kind", [stop_case, S, "Contact/Obstacles=pin: cone, center=25 10.634, radius=2"],
             ["flexure_hinge_stop.prm", "Contact/Obstacles", "pin", "cone"])
+solver_case("contact obstacle overlapping the part at rest",
+            [stop_case, S, "Contact/Obstacles=pin: circle, center=25 5, radius=2"],
+            ["flexure_hinge_stop.prm", "Contact/Obstacles", "pin", "overlaps the part at rest"])
 solver_case("contact in a linear analysis", [stop_case, S, "Analysis=linear static"],
             ["flexure_hinge_stop.prm", "Contact/Obstacles", "linear static"])
 solver_case("contact on an arc-length path", [stop_case, S, "Finite strain/Path=arc length"],

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 #include <map>
 
 namespace compliant
@@ -109,6 +110,42 @@ namespace compliant
           n.area  = ghosted_area(first);
           nodes.push_back(n);
         }
+
+    // The active set starts from the part at rest: a node already inside an obstacle there is held
+    // onto its surface in one jump, which inverts the cells beside it (Newton fails at every step
+    // size). An obstacle drawn into the part is an input error; say where.
+    struct
+    {
+      double depth;
+      int    rank;
+    } deepest{0., static_cast<int>(Utilities::MPI::this_mpi_process(communicator))};
+    std::vector<double> where(dim + 1, 0.);
+    for (const auto &node : nodes)
+      if (node.owned)
+        {
+          double         gap;
+          Tensor<1, dim> n;
+          const auto     o = nearest(node, node.reference, 0, gap, n);
+          if (-gap > deepest.depth)
+            {
+              deepest.depth = -gap;
+              for (unsigned int d = 0; d < dim; ++d)
+                where[d] = node.reference[d];
+              where[dim] = o;
+            }
+        }
+    MPI_Allreduce(MPI_IN_PLACE, &deepest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, communicator);
+    if (deepest.depth <= tolerance)
+      return;
+    where = Utilities::MPI::broadcast(communicator, where, deepest.rank);
+    std::ostringstream message;
+    message << "Contact/Obstacles: obstacle '" << obstacles[static_cast<unsigned>(where[dim])].name
+            << "' overlaps the part at rest: the contact boundary's node at (";
+    for (unsigned int d = 0; d < dim; ++d)
+      message << (d ? ", " : "") << where[d];
+    message << ") lies " << deepest.depth << " inside it (tolerance " << tolerance
+            << "); place the obstacle clear of the part or touching it";
+    throw std::invalid_argument(message.str());
   }
 
   template <int dim>
