@@ -24,20 +24,49 @@ STOP_3D = os.path.join(cases, "contact", "cantilever_3d_stop.prm")
 FORMER = os.path.join(cases, "contact", "leaf_former.prm")
 
 
-def run_with_files(case, sets=(), np=2):
-    """Runs a case; returns (quantities, rows of curve.csv, rows of contact.csv)."""
+def run_with_files(case, sets=(), np=2, fields=None):
+    """Runs a case; returns (quantities, rows of curve.csv, rows of contact.csv). fields: a dict
+    that gets the written fields' nodes and contact_pressure and contact_gap (fields.h5)."""
     out = tempfile.mkdtemp(prefix="compliant-contact-")
     try:
-        q = run_case(case, list(sets), np=np, output_dir=out)["quantities"]
+        sets = list(sets) + (["Output/Fields=true"] if fields is not None else [])
+        q = run_case(case, sets, np=np, output_dir=out)["quantities"]
         with open(os.path.join(out, "curve.csv")) as f:
             curve = list(csv.DictReader(f))
         nodes = []
         if os.path.exists(os.path.join(out, "contact.csv")):
             with open(os.path.join(out, "contact.csv")) as f:
                 nodes = list(csv.DictReader(f))
+        if fields is not None:
+            import h5py
+            with h5py.File(os.path.join(out, "fields.h5"), "r") as f:
+                for name in ("nodes", "contact_pressure", "contact_gap"):
+                    if name in f:
+                        fields[name] = [list(row) if hasattr(row, "__len__") else row for row in f[name][()]]
         return q, curve, nodes
     finally:
         shutil.rmtree(out, ignore_errors=True)
+
+
+def fields_match_nodes(fields, nodes, what):
+    """The contact pressure and gap fields equal contact.csv at every contact node (the fields are
+    single precision: to 1e-6 of the largest value)."""
+    if not check("contact_pressure" in fields and "contact_gap" in fields,
+                 "%s: fields.h5 holds contact_pressure and contact_gap" % what):
+        return
+    xyz = fields["nodes"]
+    scale = {k: max(abs(float(n[k])) for n in nodes) for k in ("pressure", "gap")}
+    worst = {"pressure": 0.0, "gap": 0.0}
+    for n in nodes:
+        ref = [float(n["reference_" + a]) for a in "xyz" if "reference_" + a in n]
+        k = min(range(len(xyz)), key=lambda i: sum((xyz[i][d] - ref[d]) ** 2 for d in range(len(ref))))
+        for key, field in (("pressure", "contact_pressure"), ("gap", "contact_gap")):
+            value = fields[field][k]
+            value = value[0] if isinstance(value, list) else value
+            worst[key] = max(worst[key], abs(value - float(n[key])))
+    for key in worst:
+        check(worst[key] <= 1e-6 * scale[key], "%s: the contact_%s field equals contact.csv at all %d nodes (to %.2g, "
+              "largest %.3g)" % (what, key, len(nodes), worst[key], scale[key]))
 
 
 def no_penetration(q, nodes, what):
@@ -182,7 +211,10 @@ elif mode == "stop_3d":
             ("sphere, 2 ranks", ["Contact/Obstacles=stop: sphere, center=60 -56 0, radius=50"], 2)]
     results = {}
     for name, sets, np in runs:
-        q, curve, nodes = run_with_files(STOP_3D, sets, np=np)
+        fields = {} if name == "cylinder, 2 ranks" else None
+        q, curve, nodes = run_with_files(STOP_3D, sets, np=np, fields=fields)
+        if fields is not None:
+            fields_match_nodes(fields, nodes, name)
         results[name] = q
         F = math.sqrt(sum(q["contact_force_stop_" + a] ** 2 for a in "xyz"))
         print("%s: contact force %s, %d held nodes, Newton per step %s" % (
@@ -204,7 +236,9 @@ elif mode == "former":
     # 0.24 % (the moment on 80 x 1, 160 x 2 and 320 x 4 cells: +0.244, +0.232, +0.231 %).
     E, H, R, P = 1000.0, 1.0, 20.0, 0.3
     reference = E * H ** 3 / 12 / (R + H / 2)
-    q, curve, nodes = run_with_files(FORMER)
+    fields = {}
+    q, curve, nodes = run_with_files(FORMER, fields=fields)
+    fields_match_nodes(fields, nodes, "leaf on its former")
     moments = [float(r["reaction_moment_left_z"]) for r in curve]
     loads = [float(r["load_factor"]) for r in curve]
     held = [int(float(r["contact_active_nodes"])) for r in curve]

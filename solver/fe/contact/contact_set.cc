@@ -298,6 +298,30 @@ namespace compliant
   }
 
   template <int dim>
+  void ContactSet<dim>::nodal_fields(const PETScWrappers::MPI::Vector &u, const PETScWrappers::MPI::Vector &residual,
+                                     const double load_factor, PETScWrappers::MPI::Vector &pressure,
+                                     PETScWrappers::MPI::Vector &gap) const
+  {
+    for (const auto &node : nodes)
+      if (node.owned)
+        {
+          const Point<dim> x = position(node, u);
+          Tensor<1, dim>   n;
+          double           g;
+          nearest(node, x, load_factor, g, n);
+          double lambda = 0;
+          if (node.active >= 0)
+            {
+              g = obstacles[node.active].gap(x, load_factor, n);
+              for (unsigned int d = 0; d < dim; ++d)
+                lambda -= residual(node.dofs[d]) * n[d];
+            }
+          pressure(node.dofs[0]) = node.area > 0 ? lambda / node.area : 0.;
+          gap(node.dofs[0])      = g;
+        }
+  }
+
+  template <int dim>
   void ContactSet<dim>::write_csv(const std::string &file, const PETScWrappers::MPI::Vector &u,
                                   const PETScWrappers::MPI::Vector &residual, const double load_factor) const
   {

@@ -86,6 +86,14 @@ namespace compliant
     void write_csv(const std::string &file, const dealii::PETScWrappers::MPI::Vector &u,
                    const dealii::PETScWrappers::MPI::Vector &residual, double load_factor) const;
 
+    // The contact pressure (force along the normal over the lumped area; 0 on a free node) and
+    // the gap to the nearest obstacle at every contact node, written at the node's first
+    // displacement DoF of `pressure` and `gap` (owned vectors of the problem's DoFs, zero
+    // elsewhere; compress(insert) after). Collective.
+    void nodal_fields(const dealii::PETScWrappers::MPI::Vector &u, const dealii::PETScWrappers::MPI::Vector &residual,
+                      double load_factor, dealii::PETScWrappers::MPI::Vector &pressure,
+                      dealii::PETScWrappers::MPI::Vector &gap) const;
+
     const std::vector<Obstacle<dim>> obstacles;
     double                           tolerance = 0; // absolute, a length
 

@@ -1,6 +1,9 @@
 #include "output/field_output.h"
 #include "output/field_writer.h"
 
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
@@ -11,6 +14,7 @@
 #include <array>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <type_traits>
 
 namespace compliant
@@ -103,6 +107,73 @@ namespace compliant
       const Problem &problem;
       const bool     nonlinear = !std::is_same_v<Problem, LinearElasticProblem<dim>>;
     };
+
+    // Contact pressure and gap as scalar fields (deal.II's DataOut takes a second DoFHandler on
+    // the same mesh): their values at the contact nodes, 0 off the contact boundaries. A face's
+    // values depend on its own nodes only, so on the contact boundaries they are the nodes'.
+    template <int dim>
+    struct ContactFields
+    {
+      std::unique_ptr<FE_Q<dim>>                        fe;
+      std::unique_ptr<DoFHandler<dim>>                  dofs;
+      LinearAlgebra::distributed::Vector<double>        pressure, gap;
+    };
+
+    template <int dim>
+    void add_contact_fields(DataOut<dim> &, const LinearElasticProblem<dim> &, ContactFields<dim> &)
+    {}
+
+    template <int dim>
+    void add_contact_fields(DataOut<dim> &data_out, const FiniteStrainProblem<dim> &problem, ContactFields<dim> &fields)
+    {
+      if (!problem.contact)
+        return;
+      auto residual = problem.reaction_forces();
+      residual *= -1; // f_ext - f_int
+      PETScWrappers::MPI::Vector pressure(problem.locally_owned_dofs, problem.communicator), gap(pressure);
+      problem.contact->nodal_fields(problem.solution, residual, problem.load_factor, pressure, gap);
+      pressure.compress(VectorOperation::insert);
+      gap.compress(VectorOperation::insert);
+      PETScWrappers::MPI::Vector pressure_ghosted(problem.locally_owned_dofs, problem.locally_relevant_dofs,
+                                                  problem.communicator),
+        gap_ghosted(pressure_ghosted);
+      pressure_ghosted = pressure;
+      gap_ghosted      = gap;
+
+      fields.fe   = std::make_unique<FE_Q<dim>>(problem.fe->base_element(0).degree);
+      fields.dofs = std::make_unique<DoFHandler<dim>>(problem.triangulation);
+      fields.dofs->distribute_dofs(*fields.fe);
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(*fields.dofs, relevant);
+      fields.pressure.reinit(fields.dofs->locally_owned_dofs(), relevant, problem.communicator);
+      fields.gap.reinit(fields.dofs->locally_owned_dofs(), relevant, problem.communicator);
+      const auto &fe = *problem.fe;
+      std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell()), scalar_dofs(fields.fe->n_dofs_per_cell());
+      auto scalar_cell = fields.dofs->begin_active();
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        {
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(vector_dofs);
+              scalar_cell->get_dof_indices(scalar_dofs);
+              for (unsigned int i = 0; i < vector_dofs.size(); ++i)
+                if (fe.system_to_base_index(i).first == std::make_pair(0u, 0u)) // the x displacement
+                  {
+                    const auto j = scalar_dofs[fe.system_to_base_index(i).second];
+                    if (fields.pressure.locally_owned_elements().is_element(j))
+                      {
+                        fields.pressure[j] = pressure_ghosted(vector_dofs[i]);
+                        fields.gap[j]      = gap_ghosted(vector_dofs[i]);
+                      }
+                  }
+            }
+          ++scalar_cell;
+        }
+      fields.pressure.update_ghost_values();
+      fields.gap.update_ghost_values();
+      data_out.add_data_vector(*fields.dofs, fields.pressure, "contact_pressure");
+      data_out.add_data_vector(*fields.dofs, fields.gap, "contact_gap");
+    }
   } // namespace
 
   template <class Problem>
@@ -159,6 +230,8 @@ namespace compliant
     data_out.add_data_vector(problem.solution, names, DataOut<dim>::type_dof_data, interpretation);
     StressPostprocessor<Problem> stress(problem);
     data_out.add_data_vector(problem.solution, stress);
+    ContactFields<dim> contact; // must outlive the patches
+    add_contact_fields(data_out, problem, contact);
 
     return write_field_files(data_out, problem, directory);
   }
