@@ -266,22 +266,15 @@ namespace compliant
     for (const auto &node : nodes)
       if (node.owned)
         {
-          const Point<dim> x = position(node, u);
-          Tensor<1, dim>   n;
-          double           gap;
-          nearest(node, x, load_factor, gap, n);
-          result.max_penetration = std::max(result.max_penetration, -gap);
+          const auto state       = state_of(node, u, residual, load_factor);
+          result.max_penetration = std::max(result.max_penetration, -state.nearest_gap);
           if (node.active < 0)
             continue;
-          gap           = obstacles[node.active].gap(x, load_factor, n);
-          double lambda = 0;
-          for (unsigned int d = 0; d < dim; ++d)
-            lambda -= residual(node.dofs[d]) * n[d];
           auto &r = result.obstacles[node.active];
-          r.force += lambda * n;
+          r.force += state.force * state.normal;
           Tensor<1, 3> x3, f3;
           for (unsigned int d = 0; d < dim; ++d)
-            x3[d] = x[d], f3[d] = lambda * n[d];
+            x3[d] = state.x[d], f3[d] = state.force * state.normal[d];
           r.moment += cross_product_3d(x3, f3);
           ++r.nodes;
           ++result.active_nodes;
@@ -305,20 +298,28 @@ namespace compliant
     for (const auto &node : nodes)
       if (node.owned)
         {
-          const Point<dim> x = position(node, u);
-          Tensor<1, dim>   n;
-          double           g;
-          nearest(node, x, load_factor, g, n);
-          double lambda = 0;
-          if (node.active >= 0)
-            {
-              g = obstacles[node.active].gap(x, load_factor, n);
-              for (unsigned int d = 0; d < dim; ++d)
-                lambda -= residual(node.dofs[d]) * n[d];
-            }
-          pressure(node.dofs[0]) = node.area > 0 ? lambda / node.area : 0.;
-          gap(node.dofs[0])      = g;
+          const auto state       = state_of(node, u, residual, load_factor);
+          pressure(node.dofs[0]) = node.area > 0 ? state.force / node.area : 0.;
+          gap(node.dofs[0])      = state.gap;
         }
+  }
+
+  template <int dim>
+  typename ContactSet<dim>::NodeState ContactSet<dim>::state_of(const Node &node, const PETScWrappers::MPI::Vector &u,
+                                                                const PETScWrappers::MPI::Vector &residual,
+                                                                const double load_factor) const
+  {
+    NodeState state;
+    state.x = position(node, u);
+    nearest(node, state.x, load_factor, state.nearest_gap, state.normal);
+    state.gap = state.nearest_gap;
+    if (node.active >= 0)
+      {
+        state.gap = obstacles[node.active].gap(state.x, load_factor, state.normal);
+        for (unsigned int d = 0; d < dim; ++d)
+          state.force -= residual(node.dofs[d]) * state.normal[d];
+      }
+    return state;
   }
 
   template <int dim>
@@ -330,24 +331,13 @@ namespace compliant
     for (const auto &node : nodes)
       if (node.owned)
         {
-          const Point<dim> x = position(node, u);
-          Tensor<1, dim>   n;
-          double           gap;
-          unsigned int     o = nearest(node, x, load_factor, gap, n);
-          double           lambda = 0;
-          if (node.active >= 0)
-            {
-              o   = node.active;
-              gap = obstacles[o].gap(x, load_factor, n);
-              for (unsigned int d = 0; d < dim; ++d)
-                lambda -= residual(node.dofs[d]) * n[d];
-            }
+          const auto state = state_of(node, u, residual, load_factor);
           for (unsigned int d = 0; d < dim; ++d)
             local.push_back(node.reference[d]);
           for (unsigned int d = 0; d < dim; ++d)
-            local.push_back(x[d]);
-          local.insert(local.end(), {gap, lambda, node.area, node.area > 0 ? lambda / node.area : 0.,
-                                     node.active >= 0 ? double(o) : -1.});
+            local.push_back(state.x[d]);
+          local.insert(local.end(), {state.gap, state.force, node.area, node.area > 0 ? state.force / node.area : 0.,
+                                     double(node.active)});
         }
     const auto parts = Utilities::MPI::gather(communicator, local);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)

@@ -116,5 +116,15 @@ namespace compliant
     unsigned int nearest(const Node &node, const dealii::Point<dim> &x, double load_factor, double &gap,
                          dealii::Tensor<1, dim> &normal) const;
     void         share_active_set(); // the owners' decisions to the ranks that see a node as ghost
+    // A node at state u: its position, the gap to the nearest obstacle, and, if held, the gap to
+    // its obstacle, the normal there and the contact force along it (from r = f_ext - f_int).
+    struct NodeState
+    {
+      dealii::Point<dim>     x;
+      dealii::Tensor<1, dim> normal;
+      double                 nearest_gap = 0, gap = 0, force = 0;
+    };
+    NodeState state_of(const Node &node, const dealii::PETScWrappers::MPI::Vector &u,
+                       const dealii::PETScWrappers::MPI::Vector &residual, double load_factor) const;
   };
 } // namespace compliant
