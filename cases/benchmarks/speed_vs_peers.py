@@ -5,11 +5,16 @@ run (issue 11). The cantilever of cases/benchmarks/cantilever.prm on n x n x 10n
 modes), CalculiX (C3D20R, SPOOLES, 2 threads). For each mesh the codes run one after another, so
 they share the machine's load. Wall time is the whole process as a user sees it (mpirun to exit).
 
-The reference tip deflection is extrapolated from our three finest Q2 meshes (Richardson with the
-observed order); every code's error is against it.
+The reference QoI is extrapolated from our three finest meshes (Richardson with the observed order)
+at the highest --degree, or given by --reference; every code's and degree's error is against the same
+value. --degree 2,3,4 runs our ladder at each element degree (--set "Discretization/Element degree=K";
+the DoF estimate that skips the assembled methods scales with K); --max-wall stops one of our ladders
+after a run longer than that; --targets 0.01,0.003,0.001 adds the wall time at which each ladder
+reaches those errors and its ratio to each peer; --name writes <name>_speed.* instead of <problem>_speed.*.
 
   scripts/setup.sh peers        # once: installs calculix-ccx and python3-dolfinx, builds
   /usr/bin/python3 cases/benchmarks/speed_vs_peers.py [--problem cantilever|leaf|hinge|flexure-finite-strain] [--n ...] [--methods auto,cg-amg,direct]
+      [--degree 2[,3,4]] [--reference VALUE --reference-note TEXT] [--max-wall S] [--targets E,...] [--name NAME]
 
 Writes cases/benchmarks/<problem>_speed.{csv,md,png}. --problem leaf: the thin leaf in torsion of
 cases/benchmarks/leaf_torsion.prm (strain energy as QoI). --problem hinge: the 3D blade flexure hinge of
@@ -36,17 +41,18 @@ ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
 
 
 # Each problem: our case file, the mesh parameters for ladder value n, how to read our QoI, the
-# FEniCSx script, the Q2 DoF count (to skip expensive methods), and the QoI's name.
+# FEniCSx script, our DoF count at ladder value n and element degree k (to skip expensive methods),
+# and the QoI's name.
 PROBLEMS = {
     "cantilever": dict(case="cantilever.prm", mesh=lambda n: {"ny": n, "nz": n},
                        qoi=lambda q: -q["displacement_tip_z"], fenicsx="fenicsx_cantilever.py",
                        fenicsx_qoi=lambda v: -v, calculix_qoi=lambda v: -v,
-                       dofs=lambda n: 3 * (2 * n + 1) ** 2 * (20 * n + 1),
+                       dofs=lambda n, k=2: 3 * (k * n + 1) ** 2 * (10 * k * n + 1),
                        label="tip deflection", title="3D cantilever, n x n x 10n hexahedra"),
     "leaf": dict(case="leaf_torsion.prm", mesh=lambda n: {"nx": 5 * n, "ny": 10 * n, "nz": n},
                  qoi=lambda q: q["strain_energy"], fenicsx="fenicsx_leaf.py", fenicsx_qoi=lambda v: v,
                  calculix_qoi=lambda v: v,
-                 dofs=lambda n: 3 * (10 * n + 1) * (20 * n + 1) * (2 * n + 1),
+                 dofs=lambda n, k=2: 3 * (5 * k * n + 1) * (10 * k * n + 1) * (k * n + 1),
                  label="strain energy", title="leaf in torsion, 5m x 10m x m hexahedra (cells 8:1:1)"),
 }
 sys.path.insert(0, os.path.join(HERE, "peers"))
@@ -54,7 +60,8 @@ import hinge_mesh  # noqa: E402
 
 PROBLEMS["hinge"] = dict(case="hinge_3d.prm", mesh=lambda m: {}, mesh_file=hinge_mesh.write_inp,
                          qoi=lambda q: q["strain_energy"], fenicsx="fenicsx_hinge.py", fenicsx_qoi=lambda v: v,
-                         calculix_qoi=lambda v: v, dofs=hinge_mesh.q2_dofs, label="strain energy",
+                         calculix_qoi=lambda v: v, dofs=lambda m, k=2: hinge_mesh.q2_dofs(m) * (k / 2) ** 3,
+                         label="strain energy",
                          title="3D blade flexure hinge, level m (blade cells 4:1:5)")
 # Finite strain (issue 30, item 2): the neo-Hookean strip turned 45 degrees of flexure_finite_strain.prm
 # on 20n x 4n x n cells; FEniCSx with the same law, quadrature and load factors; CalculiX NLGEOM with
@@ -66,16 +73,18 @@ PROBLEMS["flexure-finite-strain"] = dict(
     fenicsx_qoi=lambda v: v, fenicsx_args=["direct"], fenicsx_variant="mumps", peers=["fenicsx", "calculix"],
     calculix="calculix_flexure_finite_strain.py", calculix_args=lambda n, work: [str(n), work],
     calculix_qoi=lambda v: v, calculix_variant="C3D20R spooles", solve_key="time_linear_solves",
-    iterations_key="newton_iterations", dofs=lambda n: 3 * (40 * n + 1) * (8 * n + 1) * (2 * n + 1),
+    iterations_key="newton_iterations",
+    dofs=lambda n, k=2: 3 * (20 * k * n + 1) * (4 * k * n + 1) * (k * n + 1),
     label="end moment M_y", title="TPU strip turned 45 degrees (neo-Hookean, 6 load steps), 20n x 4n x n hexahedra")
 PROBLEM = PROBLEMS["cantilever"]
 
 
-def run_ours(n, method, ranks):
+def run_ours(n, method, ranks, degree=2):
     work = tempfile.mkdtemp(prefix="bench-")
     out = os.path.join(work, "run")
     cmd = ["mpirun", "-np", str(ranks), SOLVER, os.path.join(HERE, PROBLEM["case"]),
-           "--set", "Linear solver/Method=" + method, "--set", "Output/Directory=" + out]
+           "--set", "Linear solver/Method=" + method, "--set", "Output/Directory=" + out,
+           "--set", "Discretization/Element degree=%d" % degree]
     for name, value in PROBLEM["mesh"](n).items():
         cmd += ["--set", "Geometry/Parameters/%s=%d" % (name, value)]
     if "mesh_file" in PROBLEM:  # the mesh the peers solve, written for this level
@@ -159,12 +168,59 @@ def time_at_error(rows, target):
     return float("nan")
 
 
+def time_to_reach(rows, target):
+    """(wall time, note) at which a mesh ladder first reaches an error: walking the meshes from coarse
+    to fine, log-log interpolation between the last mesh above the target and the first at or below
+    it. Unlike time_at_error, an error that is not monotone (a code converging to a slightly different
+    value, or crossing the reference) is not paired across meshes. note: "" interpolated, "<=" the
+    coarsest mesh is already there (its time is an upper bound), "not reached" nan."""
+    pts = [(r["error"], r["wall_s"]) for r in sorted(rows, key=lambda r: r["dofs"])]
+    if not pts:
+        return float("nan"), "not reached"
+    if pts[0][0] <= target:
+        return pts[0][1], "<="
+    for (e0, t0), (e1, t1) in zip(pts, pts[1:]):
+        if e1 <= target < e0:
+            if e1 <= 0:
+                return t1, "<="
+            w = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            return math.exp(math.log(t0) + w * (math.log(t1) - math.log(t0))), ""
+    return float("nan"), "not reached"
+
+
+def reference_from(rows, finest=False):
+    """(order, limit, meshes) by Richardson on one ladder of our runs: the three finest of a halving
+    ladder (n, 2n, 4n) if present, else (or with finest) the finest three."""
+    q = {r["n"]: r["qoi"] for r in rows}
+    if len(q) < 3:
+        return float("nan"), (max(q.items())[1] if q else float("nan")), tuple(sorted(q))
+    triple = None if finest else next(((a, 2 * a, 4 * a) for a in sorted(q, reverse=True)
+                                       if 4 * a in q and 2 * a in q), None)
+    if triple is None:
+        triple = tuple(sorted(q)[-3:])
+    order, limit = richardson(triple, [q[t] for t in triple])
+    return order, limit, triple
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--problem", default="cantilever", choices=sorted(PROBLEMS))
     parser.add_argument("--n", default=None, help="mesh ladder (cantilever: cells across, default 2,4,6,8,12,16; "
                         "leaf: cells through the thickness, default 1,2,3,4,6,8)")
     parser.add_argument("--methods", default="auto,cg-amg,direct", help="our Linear solver/Method values")
+    parser.add_argument("--degree", default="2", help="our element degree(s), comma-separated (e.g. 2,3,4): "
+                        "each is run on the ladder as --set 'Discretization/Element degree=K'; with more than "
+                        "one, or one other than 2, the method column reads e.g. 'auto Q3'")
+    parser.add_argument("--reference", type=float, default=None,
+                        help="the reference QoI every error is measured against; default: Richardson on our "
+                        "three finest meshes at the highest degree (first method), the same for all degrees")
+    parser.add_argument("--reference-note", default="", help="how --reference was obtained (for the report)")
+    parser.add_argument("--max-wall", type=float, default=float("inf"),
+                        help="stop one of our (method, degree) ladders after a run longer than this (s)")
+    parser.add_argument("--targets", default="", help="errors (e.g. 0.01,0.003,0.001) at which to report every "
+                        "ladder's wall time and the ratio to each peer")
+    parser.add_argument("--name", default=None, help="report name: writes <name>_speed.{csv,md,png} "
+                        "(default: the problem's name)")
     parser.add_argument("--peers", default="fenicsx,calculix")
     parser.add_argument("--ranks", type=int, default=2)
     parser.add_argument("--direct-max-dofs", type=float, default=1.5e5, help="MUMPS grows fast: skip above")
@@ -178,6 +234,10 @@ def main():
                         "flexure-finite-strain": "1,2,3,4,5"}[args.problem]
     ladder = [int(v) for v in args.n.split(",")]
     methods = [m for m in args.methods.split(",") if m]
+    degrees = [int(v) for v in args.degree.split(",") if v]
+    name = args.name or PROBLEM_NAME
+    label_degree = degrees != [2]
+    stopped = set()  # (method, degree) ladders past --max-wall
     peers = [p for p in args.peers.split(",") if p and p in PROBLEM.get("peers", ["fenicsx", "calculix"])]
     if args.problem == "cantilever" and "calculix" in peers and any(n % 2 for n in ladder):
         sys.exit("speed_vs_peers.py: --n %s: the cantilever's tip (the end face's centre) is a node of "
@@ -186,38 +246,57 @@ def main():
         run_fenicsx(1, 1)
     rows = []
     for n in ladder:
-        dofs_q2 = PROBLEM["dofs"](n)
-        for m in methods:
-            cap = {"direct": args.direct_max_dofs, "cg-amg": args.amg_max_dofs}.get(m, float("inf"))
-            if dofs_q2 > cap:
-                continue
-            r = run_ours(n, m, args.ranks)
-            r.update(code="compliant", variant=m, n=n)
-            rows.append(r)
-            print(json.dumps(r), flush=True)
+        for k in degrees:
+            dofs = PROBLEM["dofs"](n, k)
+            for m in methods:
+                cap = {"direct": args.direct_max_dofs, "cg-amg": args.amg_max_dofs}.get(m, float("inf"))
+                if dofs > cap or (m, k) in stopped:
+                    continue
+                r = run_ours(n, m, args.ranks, k)
+                r.update(code="compliant", variant="%s Q%d" % (m, k) if label_degree else m, n=n, degree=k)
+                rows.append(r)
+                print(json.dumps(r), flush=True)
+                if r.get("wall_s", 0) > args.max_wall or "skipped" in r:
+                    stopped.add((m, k))
         if n <= args.peer_max_n:
             for peer in peers:
                 r = run_fenicsx(n, args.ranks) if peer == "fenicsx" else run_calculix(n)
                 variant = PROBLEM.get("fenicsx_variant", "gamg") if peer == "fenicsx" else PROBLEM.get("calculix_variant", "spooles")
-                r.update(code=peer, variant=variant, n=n)
+                r.update(code=peer, variant=variant, n=n, degree=2)
                 rows.append(r)
                 print(json.dumps(r), flush=True)
     done = [r for r in rows if "skipped" not in r]
-    ours = sorted({r["n"]: r for r in done if r["code"] == "compliant"}.values(), key=lambda r: r["n"])
-    # Richardson on the three finest meshes of a halving ladder (n, 2n, 4n) if present, else the finest three.
-    q = {r["n"]: r["qoi"] for r in ours}
-    triple = next(((a, 2 * a, 4 * a) for a in sorted(q, reverse=True) if 4 * a in q and 2 * a in q), None)
-    if triple is None:
-        ns = sorted(q)[-3:]
-        triple = tuple(ns)
-    order, reference = richardson(triple, [q[t] for t in triple])
+    # One reference for every code and degree: given, or Richardson on our highest degree's ladder (first
+    # method); the methods share the discretisation, so any one of them serves.
+    ladders = {}
+    for r in done:
+        if r["code"] == "compliant":
+            ladders.setdefault((r["degree"], r["variant"]), []).append(r)
+    extrapolations = []  # (degree, variant, order, limit, meshes) for every ladder of ours, for the report
+    for (k, variant), rs in sorted(ladders.items()):
+        extrapolations.append((k, variant) + reference_from(rs))
+        finest = (k, variant) + reference_from(rs, finest=True)
+        if finest[4] != extrapolations[-1][4]:
+            extrapolations.append(finest)
+    top = [e for e in extrapolations if e[0] == max(degrees) and e[1] in
+           ("%s Q%d" % (methods[0], max(degrees)) if label_degree else methods[0],)]
+    if args.reference is not None:
+        reference = args.reference
+        how = "given (--reference)" + (": " + args.reference_note if args.reference_note else "")
+    elif top:
+        k, variant, order, reference, triple = top[0]
+        how = "Richardson on our %sn = %s, observed order %.2f" % ("Q%d, " % k if label_degree else "", triple, order)
+    else:
+        sys.exit("speed_vs_peers.py: no run of ours to take a reference from")
     for r in done:
         r["error"] = abs(r["qoi"] - reference) / abs(reference)
-    print("\nReference %s %.9g (Richardson on our n = %s, observed order %.2f)" % (PROBLEM["label"], reference, triple, order))
+    print("\nReference %s %.9g (%s)" % (PROBLEM["label"], reference, how))
 
     os.makedirs(args.out, exist_ok=True)
     keys = ["code", "variant", "n", "dofs", "qoi", "error", "wall_s", "solve_s", "iterations", "memory_mb"]
-    with open(os.path.join(args.out, "%s_speed.csv" % PROBLEM_NAME), "w", newline="") as f:
+    if label_degree:
+        keys.insert(2, "degree")
+    with open(os.path.join(args.out, "%s_speed.csv" % name), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys + ["method", "skipped"], extrasaction="ignore")
         w.writeheader()
         w.writerows(rows)
@@ -235,7 +314,7 @@ def main():
         pts = [(r["dofs"], r["solve_s"] if not math.isnan(r["solve_s"]) else r["wall_s"]) for r in rs if r["dofs"] >= 1.5e4]
         lines.append("- %s %s: slope %.2f over %d meshes%s" % (code, variant, fit_slope(pts), len(pts),
                                                                " (whole process)" if code == "calculix" else ""))
-    ours_fast = groups.get(("compliant", "auto")) or groups.get(("compliant", methods[0]), [])
+    ours_fast = next((rs for (code, _), rs in groups.items() if code == "compliant"), [])
     lines += ["", "Wall time at equal accuracy (log-log interpolation between meshes), peer / ours (%s):" % (
         ours_fast[0]["variant"] if ours_fast else "-"), ""]
     # At the error of each of our meshes (peers interpolated there; nan outside their range).
@@ -249,14 +328,43 @@ def main():
                 continue
             cells.append("%s %.1f" % (code, time_at_error(rs, target) / ours_t))
         lines.append("- error %.1e: ours %.2f s; %s" % (target, ours_t, ", ".join(cells)))
+    targets = [float(v) for v in args.targets.split(",") if v]
+    if targets:
+        peer_groups = [(key, rs) for key, rs in groups.items() if key[0] != "compliant"]
+        lines += ["", "Wall time (whole process, s) to reach an error, walking each ladder from coarse to fine "
+                  "(log-log interpolation between the last mesh above and the first at or below; <= : the "
+                  "coarsest mesh is already there; - : not reached on the ladder)%s:" % (
+                      "; ours / %s in brackets" % " / ".join("%s %s" % k for k, _ in peer_groups) if peer_groups else ""),
+                  "", "| code | method | " + " | ".join("%g %%" % (100 * t) for t in targets) + " |",
+                  "|---|---|" + "---|" * len(targets)]
+        reach = {key: [time_to_reach(rs, t) for t in targets] for key, rs in groups.items()}
+        for key, rs in groups.items():
+            cells = []
+            for i, (t, note) in enumerate(reach[key]):
+                if math.isnan(t):
+                    cells.append("-")
+                    continue
+                cell = "%s%.2f" % (note, t)
+                if key[0] == "compliant":
+                    ratios = ["%.2f" % (t / reach[pk][i][0]) for pk, _ in peer_groups if not math.isnan(reach[pk][i][0])]
+                    if ratios:
+                        cell += " (%s)" % ", ".join(ratios)
+                cells.append(cell)
+            lines.append("| %s | %s | %s |" % (key[0], key[1], " | ".join(cells)))
+    if len(extrapolations) > 1 or args.reference is not None:
+        lines += ["", "Richardson extrapolation of each of our ladders (the three finest meshes of a halving ladder, "
+                  "and the finest three):", ""]
+        for k, variant, order, limit, triple in extrapolations:
+            lines.append("- %s: n = %s, observed order %.2f, limit %.9g (%+.1e against the reference)" % (
+                variant, triple, order, limit, (limit - reference) / abs(reference)))
     skipped = [r for r in rows if "skipped" in r]
     for r in skipped:
         lines.append("- skipped %s %s n=%d: %s" % (r["code"], r["variant"], r["n"], r["skipped"]))
     text = "\n".join(lines)
-    with open(os.path.join(args.out, "%s_speed.md" % PROBLEM_NAME), "w") as f:
+    with open(os.path.join(args.out, "%s_speed.md" % name), "w") as f:
         f.write("\n".join(["# Speed against accuracy: %s" % PROBLEM["title"], ""] + provenance()) + "\n" +
-                "Reference %s %.9g (Richardson on our n = %s, observed order %.2f); "
-                "%d ranks.\n\n" % (PROBLEM["label"], reference, triple, order, args.ranks) + text + "\n")
+                "Reference %s %.9g (%s); %d ranks.\n\n" % (PROBLEM["label"], reference, how, args.ranks) +
+                text + "\n")
     print(text)
 
     import matplotlib
@@ -273,7 +381,7 @@ def main():
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "%s_speed.png" % PROBLEM_NAME), dpi=120)
+    fig.savefig(os.path.join(args.out, "%s_speed.png" % name), dpi=120)
 
 
 if __name__ == "__main__":

@@ -89,8 +89,9 @@ namespace compliant
     {
       prm.enter_subsection("Discretization");
       {
-        prm.declare_entry("Element degree", "2", Patterns::Integer(1, 3),
-                          "Polynomial degree of the displacement elements (1 to 3).");
+        prm.declare_entry("Element degree", "2", Patterns::Integer(1, 4),
+                          "Polynomial degree of the displacement elements: 1 to 4 on quadrilaterals and "
+                          "hexahedra, 1 or 2 on triangles and tetrahedra.");
         prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 8),
                           "Uniform refinements of the gmsh mesh before solving.");
         prm.declare_entry("Formulation", "displacement", Patterns::Selection("displacement|mixed"),
