@@ -256,7 +256,13 @@ namespace compliant
           if (root)
             std::cout << "Newton from the carried state failed (" << e.what() << "); following the path"
                       << std::endl;
+          // Back to rest, with nothing the failed Newton left: no held contact nodes, no
+          // rotation to continue.
           problem.restore(unloaded, 0);
+          for (auto &rigid : problem.rigid_boundaries)
+            rigid.forget_rotation();
+          if (problem.contact)
+            problem.contact->release_all();
           return false;
         }
     }

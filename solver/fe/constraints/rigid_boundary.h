@@ -98,6 +98,12 @@ namespace compliant
       last_angle    = other.last_angle;
       last_rotation = other.last_rotation;
     }
+    // Continues it from the reference configuration again (a path restarted from rest).
+    void forget_rotation()
+    {
+      last_angle    = 0;
+      last_rotation = dealii::Tensor<1, 3>();
+    }
 
     const RigidBoundaryLoad<dim> load;
     dealii::Point<dim>           center; // reference position of the load point (the force acts

@@ -94,6 +94,13 @@ namespace compliant
                       double load_factor, dealii::PETScWrappers::MPI::Vector &pressure,
                       dealii::PETScWrappers::MPI::Vector &gap) const;
 
+    // Frees every node (a path restarted from rest).
+    void release_all()
+    {
+      for (auto &node : nodes)
+        node.active = -1;
+    }
+
     const std::vector<Obstacle<dim>> obstacles;
     double                           tolerance = 0; // absolute, a length
 
