@@ -251,6 +251,12 @@ namespace compliant
           record(1, problem.load_factor, report, {});
           return true;
         }
+      catch (const RunInterrupted &)
+        {
+          // Stopped by a signal: reported as the path's interruption, not followed again.
+          outcome.result.interrupted = true;
+          return true;
+        }
       catch (const StepFailure &e)
         {
           if (root)

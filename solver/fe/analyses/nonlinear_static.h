@@ -34,8 +34,8 @@ namespace compliant
   // start_from, if given, is a converged problem of the same case on the same mesh at a lower
   // degree: its state is carried to this run's space and Newton solves at its load factor, so
   // the run ends in the same state of a hyperelastic body without following the path again (the
-  // estimates' enriched model). Where the state cannot be carried (another mesh, the mixed
-  // formulation's discontinuous pressure) or Newton fails from it, the run follows the path.
+  // estimates' enriched model). Where the state cannot be carried (another mesh or partition)
+  // or Newton fails from it, the run follows the path.
   template <int dim>
   int run_nonlinear_static(const RunContext &context, const SummaryAmendment<dim> &amend_summary = {},
                            const FiniteStrainProblem<dim> *start_from = nullptr);

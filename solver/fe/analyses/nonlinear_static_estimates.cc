@@ -4,8 +4,8 @@
 // of the tangent at the converged state on the enriched space. The enriched state is found by
 // Newton at the end load from the run's state carried up (a hyperelastic body's state depends on
 // the load, not on the path to it), a few Newton iterations where following the path again costs
-// every step's. A path with limit points or bifurcations is followed again instead: their load
-// factors have estimates only from a path of their own. The enriched run writes to a scratch
+// every step's. A path with limit points or bifurcations is followed again instead (their load
+// factors have estimates only from a path of their own), as is one that stopped short. The enriched run writes to a scratch
 // directory inside the output directory, removed after.
 #include "analyses/error_estimates.h"
 #include "analyses/nonlinear_static.h"
@@ -28,6 +28,10 @@ namespace compliant
     const auto amend = [&](RunSummary &summary, const FiniteStrainProblem<dim> &model) {
       const bool critical_points =
         summary.quantities.count("limit_points") != 0 || summary.quantities.count("bifurcations") != 0;
+      // A path that stopped short (unstable, a failed step, a signal) is followed again too, and
+      // then ends elsewhere: no estimate of a state Newton would find whether stable or not.
+      const bool completed = summary.settings.count("status") != 0 && summary.settings.at("status") == "completed";
+      const bool follow_again = critical_points || !completed;
       std::string how_solved;
       double      enriched_solve_seconds = 0;
       unsigned    enriched_newton        = 0;
@@ -56,7 +60,7 @@ namespace compliant
               from_state = enriched_summary.settings.count("path") != 0;
               dofs = static_cast<std::size_t>(enriched_summary.quantities.at("n_dofs"));
             },
-            critical_points ? nullptr : &model);
+            follow_again ? nullptr : &model);
           if (dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0)
             std::filesystem::remove_all(scratch.output_directory);
           // A path that stopped short ends elsewhere: nothing to compare.

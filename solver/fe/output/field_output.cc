@@ -216,8 +216,9 @@ namespace compliant
   template <class Problem>
   std::string write_fields(const Problem &problem, const std::string &directory)
   {
-    constexpr int  dim = Problem::dimension;
-    DataOut<dim> data_out;
+    constexpr int      dim = Problem::dimension;
+    ContactFields<dim> contact; // before data_out: it must outlive the patches
+    DataOut<dim>       data_out;
     data_out.attach_dof_handler(problem.dof_handler);
     std::vector<std::string> names(dim, "displacement");
     std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
@@ -230,7 +231,6 @@ namespace compliant
     data_out.add_data_vector(problem.solution, names, DataOut<dim>::type_dof_data, interpretation);
     StressPostprocessor<Problem> stress(problem);
     data_out.add_data_vector(problem.solution, stress);
-    ContactFields<dim> contact; // must outlive the patches
     add_contact_fields(data_out, problem, contact);
 
     return write_field_files(data_out, problem, directory);
