@@ -50,12 +50,8 @@ namespace compliant
     if (by_degree)
       {
         enriched.element_degree = parameters.element_degree + 1;
-        // The same mesh cut the same way, or the model's solution and degree-1 level cannot be
-        // carried over (auto would distribute the 4-8 times larger enriched model alone).
         if (primal)
-          enriched.mesh_partition = primal->mesh_partition.partition == MeshPartition::distributed ?
-                                      PartitionRequest::distributed :
-                                      PartitionRequest::shared;
+          enriched.mesh_partition = partition_of_model(primal->mesh_partition.partition);
       }
     else
       enriched.global_refinements = parameters.global_refinements + 1;

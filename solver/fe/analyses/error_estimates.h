@@ -69,6 +69,14 @@ namespace compliant
   // such reactions below 1e-7; 1e-5 (4 iterations) costs a third more in 3D.
   inline constexpr double enriched_solve_reduction = 1e-4;
 
+  // The enriched model's 'Mesh partition': the model's own, or its state (solution, degree-1
+  // level, finite-strain state) cannot be carried over; auto would distribute the 4-8 times larger
+  // enriched model alone.
+  inline PartitionRequest partition_of_model(const MeshPartition partition)
+  {
+    return partition == MeshPartition::distributed ? PartitionRequest::distributed : PartitionRequest::shared;
+  }
+
   // <name>_error_estimate (relative) and <name>_error_estimate_absolute for each, and how.
   void add_error_estimates(RunSummary &summary, const QuantityEstimates &estimates);
 } // namespace compliant

@@ -43,11 +43,8 @@ namespace compliant
           scratch.output_directory = p.output_directory + "/.error_estimate";
           scratch.write_fields     = false;
           scratch.write_pictures   = false;
-          // The model's mesh cut the same way, or its state cannot be carried over.
-          if (scratch.element_degree > p.element_degree)
-            scratch.mesh_partition = model.mesh_partition.partition == MeshPartition::distributed ?
-                                       PartitionRequest::distributed :
-                                       PartitionRequest::shared;
+          if (scratch.element_degree > p.element_degree) // the same mesh: cut it the same way
+            scratch.mesh_partition = partition_of_model(model.mesh_partition.partition);
           const RunContext scratch_context{scratch, enriched_context.prm, enriched_context.geometry, false,
                                            enriched_context.communicator};
           Quantities       plus;
