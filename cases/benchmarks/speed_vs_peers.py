@@ -10,11 +10,15 @@ at the highest --degree, or given by --reference; every code's and degree's erro
 value. --degree 2,3,4 runs our ladder at each element degree (--set "Discretization/Element degree=K";
 the DoF estimate that skips the assembled methods scales with K); --max-wall stops one of our ladders
 after a run longer than that; --targets 0.01,0.003,0.001 adds the wall time at which each ladder
-reaches those errors and its ratio to each peer; --name writes <name>_speed.* instead of <problem>_speed.*.
+reaches those errors and its ratio to each peer; --name writes <name>_speed.* instead of <problem>_speed.*;
+--grade 1,50 runs every ladder (ours and CalculiX's) also on meshes graded along x, the longest cell 50
+times the shortest (meshes/graded_layers.geo; toward the clamp of the cantilever, both ends of the leaf
+and the strip; the hinge's toward its blade roots in x and y, peers/hinge_mesh.py).
 
   scripts/setup.sh peers        # once: installs calculix-ccx and python3-dolfinx, builds
   /usr/bin/python3 cases/benchmarks/speed_vs_peers.py [--problem cantilever|leaf|hinge|flexure-finite-strain] [--n ...] [--methods auto,cg-amg,direct]
-      [--degree 2[,3,4]] [--reference VALUE --reference-note TEXT] [--max-wall S] [--targets E,...] [--name NAME]
+      [--degree 2[,3,4]] [--grade 1[,G]] [--reference VALUE --reference-note TEXT] [--max-wall S] [--targets E,...]
+      [--name NAME]
 
 Writes cases/benchmarks/<problem>_speed.{csv,md,png}. --problem leaf: the thin leaf in torsion of
 cases/benchmarks/leaf_torsion.prm (strain energy as QoI). --problem hinge: the 3D blade flexure hinge of
@@ -42,23 +46,25 @@ ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
 
 # Each problem: our case file, the mesh parameters for ladder value n, how to read our QoI, the
 # FEniCSx script, our DoF count at ladder value n and element degree k (to skip expensive methods),
-# and the QoI's name.
+# the QoI's name, and where a graded mesh puts its shortest cells (graded_ends of
+# meshes/graded_layers.geo; absent: no graded meshes).
 PROBLEMS = {
     "cantilever": dict(case="cantilever.prm", mesh=lambda n: {"ny": n, "nz": n},
                        qoi=lambda q: -q["displacement_tip_z"], fenicsx="fenicsx_cantilever.py",
                        fenicsx_qoi=lambda v: -v, calculix_qoi=lambda v: -v,
                        dofs=lambda n, k=2: 3 * (k * n + 1) ** 2 * (10 * k * n + 1),
-                       label="tip deflection", title="3D cantilever, n x n x 10n hexahedra"),
+                       label="tip deflection", title="3D cantilever, n x n x 10n hexahedra", graded_ends=1),
     "leaf": dict(case="leaf_torsion.prm", mesh=lambda n: {"nx": 5 * n, "ny": 10 * n, "nz": n},
                  qoi=lambda q: q["strain_energy"], fenicsx="fenicsx_leaf.py", fenicsx_qoi=lambda v: v,
                  calculix_qoi=lambda v: v,
                  dofs=lambda n, k=2: 3 * (5 * k * n + 1) * (10 * k * n + 1) * (k * n + 1),
-                 label="strain energy", title="leaf in torsion, 5m x 10m x m hexahedra (cells 8:1:1)"),
+                 label="strain energy", title="leaf in torsion, 5m x 10m x m hexahedra (cells 8:1:1)",
+                 graded_ends=0),
 }
 sys.path.insert(0, os.path.join(HERE, "peers"))
 import hinge_mesh  # noqa: E402
 
-PROBLEMS["hinge"] = dict(case="hinge_3d.prm", mesh=lambda m: {}, mesh_file=hinge_mesh.write_inp,
+PROBLEMS["hinge"] = dict(case="hinge_3d.prm", mesh=lambda m: {}, mesh_file=hinge_mesh.write_inp, graded_ends="roots",
                          qoi=lambda q: q["strain_energy"], fenicsx="fenicsx_hinge.py", fenicsx_qoi=lambda v: v,
                          calculix_qoi=lambda v: v, dofs=lambda m, k=2: hinge_mesh.q2_dofs(m) * (k / 2) ** 3,
                          label="strain energy",
@@ -73,22 +79,32 @@ PROBLEMS["flexure-finite-strain"] = dict(
     fenicsx_qoi=lambda v: v, fenicsx_args=["direct"], fenicsx_variant="mumps", peers=["fenicsx", "calculix"],
     calculix="calculix_flexure_finite_strain.py", calculix_args=lambda n, work: [str(n), work],
     calculix_qoi=lambda v: v, calculix_variant="C3D20R spooles", solve_key="time_linear_solves",
-    iterations_key="newton_iterations",
+    iterations_key="newton_iterations", graded_ends=0,
     dofs=lambda n, k=2: 3 * (20 * k * n + 1) * (4 * k * n + 1) * (k * n + 1),
     label="end moment M_y", title="TPU strip turned 45 degrees (neo-Hookean, 6 load steps), 20n x 4n x n hexahedra")
 PROBLEM = PROBLEMS["cantilever"]
 
 
-def run_ours(n, method, ranks, degree=2):
+def graded_mesh(grade):
+    """Our mesh parameters for a mesh graded along x ({} for a uniform one, or one written by the
+    problem's mesh_file, which grades it itself)."""
+    if grade == 1 or "mesh_file" in PROBLEM:
+        return {}
+    if "graded_ends" not in PROBLEM:
+        raise ValueError("no graded meshes for --problem %s" % PROBLEM_NAME)
+    return {"grade_x": grade, "graded_ends": PROBLEM["graded_ends"]}
+
+
+def run_ours(n, method, ranks, degree=2, grade=1):
     work = tempfile.mkdtemp(prefix="bench-")
     out = os.path.join(work, "run")
     cmd = ["mpirun", "-np", str(ranks), SOLVER, os.path.join(HERE, PROBLEM["case"]),
            "--set", "Linear solver/Method=" + method, "--set", "Output/Directory=" + out,
            "--set", "Discretization/Element degree=%d" % degree]
-    for name, value in PROBLEM["mesh"](n).items():
-        cmd += ["--set", "Geometry/Parameters/%s=%d" % (name, value)]
+    for name, value in dict(PROBLEM["mesh"](n), **graded_mesh(grade)).items():
+        cmd += ["--set", "Geometry/Parameters/%s=%s" % (name, value)]
     if "mesh_file" in PROBLEM:  # the mesh the peers solve, written for this level
-        PROBLEM["mesh_file"](n, os.path.join(work, "mesh.inp"))
+        PROBLEM["mesh_file"](n, os.path.join(work, "mesh.inp"), grade)
         cmd += ["--set", "Geometry/Mesh file=" + os.path.join(work, "mesh.inp")]
     start = time.perf_counter()
     proc = subprocess.run(cmd, capture_output=True, text=True, env=ENV)
@@ -107,7 +123,9 @@ def run_ours(n, method, ranks, degree=2):
             "method": summary["settings"].get("solver", method)}
 
 
-def run_fenicsx(n, ranks):
+def run_fenicsx(n, ranks, grade=1):
+    if grade != 1:
+        return {"skipped": "the FEniCSx scripts mesh uniformly"}
     cmd = ["mpirun", "-np", str(ranks), "/usr/bin/python3", os.path.join(HERE, "peers", PROBLEM["fenicsx"]), str(n)] + \
         PROBLEM.get("fenicsx_args", [])
     start = time.perf_counter()
@@ -120,11 +138,13 @@ def run_fenicsx(n, ranks):
             "iterations": r["iterations"], "memory_mb": r["memory_mb"]}
 
 
-def run_calculix(n):
-    """One CalculiX run by the problem's helper (calculix_box.py PROBLEM N WORK by default)."""
+def run_calculix(n, grade=1):
+    """One CalculiX run by the problem's helper (calculix_box.py PROBLEM N WORK [GRADE] by default)."""
+    if grade != 1 and "calculix_args" in PROBLEM:
+        return {"skipped": "the CalculiX helper of this problem meshes uniformly"}
     work = tempfile.mkdtemp(prefix="ccx-")
     script = os.path.join(HERE, "peers", PROBLEM.get("calculix", "calculix_box.py"))
-    args = PROBLEM.get("calculix_args", lambda n, work: [PROBLEM_NAME, str(n), work])(n, work)
+    args = PROBLEM.get("calculix_args", lambda n, work: [PROBLEM_NAME, str(n), work, repr(grade)])(n, work)
     proc = subprocess.run(["/usr/bin/python3", script] + args, capture_output=True, text=True)
     shutil.rmtree(work, ignore_errors=True)
     if proc.returncode != 0:
@@ -202,7 +222,7 @@ def reference_from(rows, finest=False):
     return order, limit, triple
 
 
-def main():
+def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--problem", default="cantilever", choices=sorted(PROBLEMS))
     parser.add_argument("--n", default=None, help="mesh ladder (cantilever: cells across, default 2,4,6,8,12,16; "
@@ -211,12 +231,15 @@ def main():
     parser.add_argument("--degree", default="2", help="our element degree(s), comma-separated (e.g. 2,3,4): "
                         "each is run on the ladder as --set 'Discretization/Element degree=K'; with more than "
                         "one, or one other than 2, the method column reads e.g. 'auto Q3'")
+    parser.add_argument("--grade", default="1", help="mesh grading(s) along x, comma-separated: the longest "
+                        "cell over the shortest (1 uniform); each is run on every ladder, ours and the peers' "
+                        "where they can mesh it, the method column then reads e.g. 'auto, graded 50'")
     parser.add_argument("--reference", type=float, default=None,
                         help="the reference QoI every error is measured against; default: Richardson on our "
-                        "three finest meshes at the highest degree (first method), the same for all degrees")
+                        "three finest meshes at the highest degree (first method, first grade), the same for all")
     parser.add_argument("--reference-note", default="", help="how --reference was obtained (for the report)")
     parser.add_argument("--max-wall", type=float, default=float("inf"),
-                        help="stop one of our (method, degree) ladders after a run longer than this (s)")
+                        help="stop one of our (method, degree, grade) ladders after a run longer than this (s)")
     parser.add_argument("--targets", default="", help="errors (e.g. 0.01,0.003,0.001) at which to report every "
                         "ladder's wall time and the ratio to each peer")
     parser.add_argument("--name", default=None, help="report name: writes <name>_speed.{csv,md,png} "
@@ -228,145 +251,144 @@ def main():
     parser.add_argument("--peer-max-n", type=int, default=12)
     parser.add_argument("--out", default=HERE)
     args = parser.parse_args()
-    global PROBLEM, PROBLEM_NAME
-    PROBLEM, PROBLEM_NAME = PROBLEMS[args.problem], args.problem
     args.n = args.n or {"cantilever": "2,4,6,8,12,16", "leaf": "1,2,3,4,6", "hinge": "2,3,4,6,8,10",
                         "flexure-finite-strain": "1,2,3,4,5"}[args.problem]
-    ladder = [int(v) for v in args.n.split(",")]
-    methods = [m for m in args.methods.split(",") if m]
-    degrees = [int(v) for v in args.degree.split(",") if v]
-    name = args.name or PROBLEM_NAME
-    label_degree = degrees != [2]
-    stopped = set()  # (method, degree) ladders past --max-wall
-    peers = [p for p in args.peers.split(",") if p and p in PROBLEM.get("peers", ["fenicsx", "calculix"])]
-    if args.problem == "cantilever" and "calculix" in peers and any(n % 2 for n in ladder):
+    args.ladder = [int(v) for v in args.n.split(",")]
+    args.method_list = [m for m in args.methods.split(",") if m]
+    args.degrees = [int(v) for v in args.degree.split(",") if v]
+    args.grades = [float(v) for v in args.grade.split(",") if v]
+    args.peer_list = [p for p in args.peers.split(",") if p and p in PROBLEMS[args.problem].get("peers", ["fenicsx", "calculix"])]
+    if any(g < 1 for g in args.grades) or (args.grades != [1] and "graded_ends" not in PROBLEMS[args.problem]):
+        sys.exit("speed_vs_peers.py: --grade %s: gradings >= 1, and only for problems with graded meshes (%s)" % (
+            args.grade, ", ".join(k for k, v in PROBLEMS.items() if "graded_ends" in v)))
+    if args.problem == "cantilever" and "calculix" in args.peer_list and any(n % 2 for n in args.ladder):
         sys.exit("speed_vs_peers.py: --n %s: the cantilever's tip (the end face's centre) is a node of "
                  "CalculiX's 20-node mesh for even n only" % args.n)
-    if "fenicsx" in peers:  # warm FEniCSx's JIT cache so no run pays for compiling forms
+    return args
+
+
+def variant_label(base, degree, grade, args):
+    """The method column: the method or solver, then the degree and the grading where they vary."""
+    label = "%s Q%d" % (base, degree) if args.degrees != [2] else base
+    return label + (", graded %g" % grade if grade != 1 else "")
+
+
+def run_ladders(args):
+    """Every run, mesh by mesh: ours at each (method, degree, grade), then each peer at each grade."""
+    rows, stopped = [], set()  # stopped: our (method, degree, grade) ladders past --max-wall
+    if "fenicsx" in args.peer_list:  # warm FEniCSx's JIT cache so no run pays for compiling forms
         run_fenicsx(1, 1)
-    rows = []
-    for n in ladder:
-        for k in degrees:
-            dofs = PROBLEM["dofs"](n, k)
-            for m in methods:
-                cap = {"direct": args.direct_max_dofs, "cg-amg": args.amg_max_dofs}.get(m, float("inf"))
-                if dofs > cap or (m, k) in stopped:
-                    continue
-                r = run_ours(n, m, args.ranks, k)
-                r.update(code="compliant", variant="%s Q%d" % (m, k) if label_degree else m, n=n, degree=k)
+    for n in args.ladder:
+        for grade in args.grades:
+            for k in args.degrees:
+                dofs = PROBLEM["dofs"](n, k)
+                for m in args.method_list:
+                    cap = {"direct": args.direct_max_dofs, "cg-amg": args.amg_max_dofs}.get(m, float("inf"))
+                    if dofs > cap or (m, k, grade) in stopped:
+                        continue
+                    r = run_ours(n, m, args.ranks, k, grade)
+                    r.update(code="compliant", variant=variant_label(m, k, grade, args), n=n, degree=k)
+                    rows.append(r)
+                    print(json.dumps(r), flush=True)
+                    if r.get("wall_s", 0) > args.max_wall or "skipped" in r:
+                        stopped.add((m, k, grade))
+            if n > args.peer_max_n:
+                continue
+            for peer in args.peer_list:
+                r = run_fenicsx(n, args.ranks, grade) if peer == "fenicsx" else run_calculix(n, grade)
+                variant = PROBLEM.get("fenicsx_variant", "gamg") if peer == "fenicsx" else \
+                    PROBLEM.get("calculix_variant", "spooles")
+                r.update(code=peer, variant=variant + (", graded %g" % grade if grade != 1 else ""), n=n, degree=2)
                 rows.append(r)
                 print(json.dumps(r), flush=True)
-                if r.get("wall_s", 0) > args.max_wall or "skipped" in r:
-                    stopped.add((m, k))
-        if n <= args.peer_max_n:
-            for peer in peers:
-                r = run_fenicsx(n, args.ranks) if peer == "fenicsx" else run_calculix(n)
-                variant = PROBLEM.get("fenicsx_variant", "gamg") if peer == "fenicsx" else PROBLEM.get("calculix_variant", "spooles")
-                r.update(code=peer, variant=variant, n=n, degree=2)
-                rows.append(r)
-                print(json.dumps(r), flush=True)
-    done = [r for r in rows if "skipped" not in r]
-    # One reference for every code and degree: given, or Richardson on our highest degree's ladder (first
-    # method); the methods share the discretisation, so any one of them serves.
+    return rows
+
+
+def choose_reference(args, done):
+    """(reference, how, extrapolations): given, or Richardson on our highest degree's ladder (first
+    method, first grade); the methods share the discretisation, so any one of them serves.
+    extrapolations: (degree, variant, order, limit, meshes) for every ladder of ours, for the report."""
     ladders = {}
     for r in done:
         if r["code"] == "compliant":
             ladders.setdefault((r["degree"], r["variant"]), []).append(r)
-    extrapolations = []  # (degree, variant, order, limit, meshes) for every ladder of ours, for the report
+    extrapolations = []
     for (k, variant), rs in sorted(ladders.items()):
         extrapolations.append((k, variant) + reference_from(rs))
         finest = (k, variant) + reference_from(rs, finest=True)
         if finest[4] != extrapolations[-1][4]:
             extrapolations.append(finest)
-    top = [e for e in extrapolations if e[0] == max(degrees) and e[1] in
-           ("%s Q%d" % (methods[0], max(degrees)) if label_degree else methods[0],)]
+    first = variant_label(args.method_list[0], max(args.degrees), args.grades[0], args)
+    top = [e for e in extrapolations if e[0] == max(args.degrees) and e[1] == first]
     if args.reference is not None:
-        reference = args.reference
         how = "given (--reference)" + (": " + args.reference_note if args.reference_note else "")
-    elif top:
-        k, variant, order, reference, triple = top[0]
-        how = "Richardson on our %sn = %s, observed order %.2f" % ("Q%d, " % k if label_degree else "", triple, order)
-    else:
+        return args.reference, how, extrapolations
+    if not top:
         sys.exit("speed_vs_peers.py: no run of ours to take a reference from")
-    for r in done:
-        r["error"] = abs(r["qoi"] - reference) / abs(reference)
-    print("\nReference %s %.9g (%s)" % (PROBLEM["label"], reference, how))
+    k, variant, order, reference, triple = top[0]
+    how = "Richardson on our %sn = %s, observed order %.2f" % (
+        "Q%d, " % k if args.degrees != [2] else "", triple, order)
+    return reference, how, extrapolations
 
-    os.makedirs(args.out, exist_ok=True)
-    keys = ["code", "variant", "n", "dofs", "qoi", "error", "wall_s", "solve_s", "iterations", "memory_mb"]
-    if label_degree:
-        keys.insert(2, "degree")
-    with open(os.path.join(args.out, "%s_speed.csv" % name), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=keys + ["method", "skipped"], extrasaction="ignore")
-        w.writeheader()
-        w.writerows(rows)
+
+def table_lines(done, groups):
+    """The table of every run and the fitted slopes of solve time against DoFs."""
     lines = ["| code | method | n | DoFs | %s | error | wall (s) | solve (s) | iterations | peak MB/rank |" % PROBLEM["label"],
              "|---|---|---|---|---|---|---|---|---|---|"]
     for r in done:
         lines.append("| %s | %s | %d | %d | %.7g | %.1e | %.2f | %s | %d | %.0f |" % (
             r["code"], r["variant"], r["n"], r["dofs"], r["qoi"], r["error"], r["wall_s"],
             "-" if math.isnan(r["solve_s"]) else "%.2f" % r["solve_s"], r["iterations"], r["memory_mb"]))
-    groups = {}
-    for r in done:
-        groups.setdefault((r["code"], r["variant"]), []).append(r)
     lines += ["", "Solve time against DoFs (least-squares slope from 1.5e4 DoFs up):", ""]
     for (code, variant), rs in groups.items():
         pts = [(r["dofs"], r["solve_s"] if not math.isnan(r["solve_s"]) else r["wall_s"]) for r in rs if r["dofs"] >= 1.5e4]
         lines.append("- %s %s: slope %.2f over %d meshes%s" % (code, variant, fit_slope(pts), len(pts),
                                                                " (whole process)" if code == "calculix" else ""))
+    return lines
+
+
+def equal_accuracy_lines(groups):
+    """Each peer's wall time over ours at the errors of our first ladder's meshes."""
     ours_fast = next((rs for (code, _), rs in groups.items() if code == "compliant"), [])
-    lines += ["", "Wall time at equal accuracy (log-log interpolation between meshes), peer / ours (%s):" % (
+    lines = ["", "Wall time at equal accuracy (log-log interpolation between meshes), peer / ours (%s):" % (
         ours_fast[0]["variant"] if ours_fast else "-"), ""]
-    # At the error of each of our meshes (peers interpolated there; nan outside their range).
     for target in sorted({r["error"] for r in ours_fast if r["error"] > 0}, reverse=True):
         ours_t = time_at_error(ours_fast, target)
         if math.isnan(ours_t):
             ours_t = min(r["wall_s"] for r in ours_fast if r["error"] == target)
-        cells = []
-        for (code, variant), rs in groups.items():
-            if code == "compliant":
-                continue
-            cells.append("%s %.1f" % (code, time_at_error(rs, target) / ours_t))
+        cells = ["%s %.1f" % (code, time_at_error(rs, target) / ours_t)
+                 for (code, variant), rs in groups.items() if code != "compliant"]
         lines.append("- error %.1e: ours %.2f s; %s" % (target, ours_t, ", ".join(cells)))
-    targets = [float(v) for v in args.targets.split(",") if v]
-    if targets:
-        peer_groups = [(key, rs) for key, rs in groups.items() if key[0] != "compliant"]
-        lines += ["", "Wall time (whole process, s) to reach an error, walking each ladder from coarse to fine "
-                  "(log-log interpolation between the last mesh above and the first at or below; <= : the "
-                  "coarsest mesh is already there; - : not reached on the ladder)%s:" % (
-                      "; ours / %s in brackets" % " / ".join("%s %s" % k for k, _ in peer_groups) if peer_groups else ""),
-                  "", "| code | method | " + " | ".join("%g %%" % (100 * t) for t in targets) + " |",
-                  "|---|---|" + "---|" * len(targets)]
-        reach = {key: [time_to_reach(rs, t) for t in targets] for key, rs in groups.items()}
-        for key, rs in groups.items():
-            cells = []
-            for i, (t, note) in enumerate(reach[key]):
-                if math.isnan(t):
-                    cells.append("-")
-                    continue
-                cell = "%s%.2f" % (note, t)
-                if key[0] == "compliant":
-                    ratios = ["%.2f" % (t / reach[pk][i][0]) for pk, _ in peer_groups if not math.isnan(reach[pk][i][0])]
-                    if ratios:
-                        cell += " (%s)" % ", ".join(ratios)
-                cells.append(cell)
-            lines.append("| %s | %s | %s |" % (key[0], key[1], " | ".join(cells)))
-    if len(extrapolations) > 1 or args.reference is not None:
-        lines += ["", "Richardson extrapolation of each of our ladders (the three finest meshes of a halving ladder, "
-                  "and the finest three):", ""]
-        for k, variant, order, limit, triple in extrapolations:
-            lines.append("- %s: n = %s, observed order %.2f, limit %.9g (%+.1e against the reference)" % (
-                variant, triple, order, limit, (limit - reference) / abs(reference)))
-    skipped = [r for r in rows if "skipped" in r]
-    for r in skipped:
-        lines.append("- skipped %s %s n=%d: %s" % (r["code"], r["variant"], r["n"], r["skipped"]))
-    text = "\n".join(lines)
-    with open(os.path.join(args.out, "%s_speed.md" % name), "w") as f:
-        f.write("\n".join(["# Speed against accuracy: %s" % PROBLEM["title"], ""] + provenance()) + "\n" +
-                "Reference %s %.9g (%s); %d ranks.\n\n" % (PROBLEM["label"], reference, how, args.ranks) +
-                text + "\n")
-    print(text)
+    return lines
 
+
+def target_lines(groups, targets):
+    """Every ladder's wall time to reach each target error, ours with the ratio to each peer's ladder."""
+    peer_groups = [(key, rs) for key, rs in groups.items() if key[0] != "compliant"]
+    lines = ["", "Wall time (whole process, s) to reach an error, walking each ladder from coarse to fine "
+             "(log-log interpolation between the last mesh above and the first at or below; <= : the "
+             "coarsest mesh is already there; - : not reached on the ladder)%s:" % (
+                 "; ours / %s in brackets" % " / ".join("%s %s" % k for k, _ in peer_groups) if peer_groups else ""),
+             "", "| code | method | " + " | ".join("%g %%" % (100 * t) for t in targets) + " |",
+             "|---|---|" + "---|" * len(targets)]
+    reach = {key: [time_to_reach(rs, t) for t in targets] for key, rs in groups.items()}
+    for key, rs in groups.items():
+        cells = []
+        for i, (t, note) in enumerate(reach[key]):
+            if math.isnan(t):
+                cells.append("-")
+                continue
+            cell = "%s%.2f" % (note, t)
+            if key[0] == "compliant":
+                ratios = ["%.2f" % (t / reach[pk][i][0]) for pk, _ in peer_groups if not math.isnan(reach[pk][i][0])]
+                if ratios:
+                    cell += " (%s)" % ", ".join(ratios)
+            cells.append(cell)
+        lines.append("| %s | %s | %s |" % (key[0], key[1], " | ".join(cells)))
+    return lines
+
+
+def plot(groups, args, name):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -382,6 +404,51 @@ def main():
     ax.legend()
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, "%s_speed.png" % name), dpi=120)
+
+
+def main():
+    args = parse_arguments()
+    global PROBLEM, PROBLEM_NAME
+    PROBLEM, PROBLEM_NAME = PROBLEMS[args.problem], args.problem
+    name = args.name or PROBLEM_NAME
+    rows = run_ladders(args)
+    done = [r for r in rows if "skipped" not in r]
+    reference, how, extrapolations = choose_reference(args, done)
+    for r in done:
+        r["error"] = abs(r["qoi"] - reference) / abs(reference)
+    print("\nReference %s %.9g (%s)" % (PROBLEM["label"], reference, how))
+
+    os.makedirs(args.out, exist_ok=True)
+    keys = ["code", "variant", "n", "dofs", "qoi", "error", "wall_s", "solve_s", "iterations", "memory_mb"]
+    if args.degrees != [2]:
+        keys.insert(2, "degree")
+    with open(os.path.join(args.out, "%s_speed.csv" % name), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys + ["method", "skipped"], extrasaction="ignore")
+        w.writeheader()
+        w.writerows(rows)
+    groups = {}
+    for r in done:
+        groups.setdefault((r["code"], r["variant"]), []).append(r)
+    lines = table_lines(done, groups) + equal_accuracy_lines(groups)
+    targets = [float(v) for v in args.targets.split(",") if v]
+    if targets:
+        lines += target_lines(groups, targets)
+    if len(extrapolations) > 1 or args.reference is not None:
+        lines += ["", "Richardson extrapolation of each of our ladders (the three finest meshes of a halving ladder, "
+                  "and the finest three):", ""]
+        for k, variant, order, limit, triple in extrapolations:
+            lines.append("- %s: n = %s, observed order %.2f, limit %.9g (%+.1e against the reference)" % (
+                variant, triple, order, limit, (limit - reference) / abs(reference)))
+    for r in rows:
+        if "skipped" in r:
+            lines.append("- skipped %s %s n=%d: %s" % (r["code"], r["variant"], r["n"], r["skipped"]))
+    text = "\n".join(lines)
+    with open(os.path.join(args.out, "%s_speed.md" % name), "w") as f:
+        f.write("\n".join(["# Speed against accuracy: %s" % PROBLEM["title"], ""] + provenance()) + "\n" +
+                "Reference %s %.9g (%s); %d ranks.\n\n" % (PROBLEM["label"], reference, how, args.ranks) +
+                text + "\n")
+    print(text)
+    plot(groups, args, name)
 
 
 if __name__ == "__main__":

@@ -8,7 +8,10 @@ reduced integration), E = 1000, nu = 0.3, its default SPOOLES solver with 2 thre
                 strain energy;
   leaf M:       40 x 10 x 1, 5M x 10M x M cells, clamped at x = 0, x = 40 turned rigidly by 1 degree
                 about the x axis (exact rotation per node); QoI the strain energy (*EL PRINT ELSE).
-Writes the deck into WORK, runs ccx, prints one JSON line. Run: calculix_box.py PROBLEM N WORK"""
+GRADE (default 1): the cells along x graded as meshes/graded_layers.geo grades ours, the longest GRADE
+times the shortest, toward the clamp (cantilever) or both ends (leaf); the hinge's toward the blade
+roots (hinge_mesh.py).
+Writes the deck into WORK, runs ccx, prints one JSON line. Run: calculix_box.py PROBLEM N WORK [GRADE]"""
 import json
 import math
 import os
@@ -17,16 +20,17 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import hinge_mesh  # noqa: E402
-from calculix_common import Hex20Grid, run_ccx, uniform  # noqa: E402
+from calculix_common import Hex20Grid, graded, run_ccx, uniform  # noqa: E402
 
 problem, n, work = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+grade = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
 
 if problem == "cantilever":
-    lines_xyz = uniform(0.0, 10.0, 10 * n), uniform(-0.5, 0.5, n), uniform(-0.5, 0.5, n)
+    lines_xyz = graded(0.0, 10.0, 10 * n, grade, 1), uniform(-0.5, 0.5, n), uniform(-0.5, 0.5, n)
 elif problem == "leaf":
-    lines_xyz = uniform(0.0, 40.0, 5 * n), uniform(-5.0, 5.0, 10 * n), uniform(-0.5, 0.5, n)
+    lines_xyz = graded(0.0, 40.0, 5 * n, grade, 0), uniform(-5.0, 5.0, 10 * n), uniform(-0.5, 0.5, n)
 elif problem == "hinge":
-    *lines_xyz, hinge_cells = hinge_mesh.grid(n)
+    *lines_xyz, hinge_cells = hinge_mesh.grid(n, grade)
 else:
     sys.exit("unknown problem '%s' (cantilever | leaf | hinge)" % problem)
 mesh = Hex20Grid(lines_xyz, hinge_cells if problem == "hinge" else None)

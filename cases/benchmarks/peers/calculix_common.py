@@ -19,6 +19,22 @@ def uniform(lo, hi, cells):
     return [lo + (hi - lo) * i / cells for i in range(cells + 1)]
 
 
+def graded(lo, hi, cells, grade, ends):
+    """Grid lines of meshes/graded_layers.geo: cell lengths in geometric progression away from the
+    graded end(s), the longest `grade` times the shortest; ends 0 both, 1 at lo, 2 at hi."""
+    if grade == 1:
+        return uniform(lo, hi, cells)
+    steps = (cells - 1) // 2 if ends == 0 else cells - 1
+    ratio = grade ** (1.0 / steps) if steps > 0 else 1.0
+    k = [i if ends == 1 else cells - 1 - i if ends == 2 else min(i, cells - 1 - i) for i in range(cells)]
+    lengths = [ratio ** j for j in k]
+    total, lines = sum(lengths), [lo]
+    for length in lengths:
+        lines.append(lines[-1] + (hi - lo) * length / total)
+    lines[-1] = hi
+    return lines
+
+
 class Hex20Grid:
     """The 20-node hexahedra of the cells (a, b, c) of the grid lines xyz (all cells if None).
     Node ids number the fine (2nx+1) x (2ny+1) x (2nz+1) grid; `used` maps the ids of the nodes the

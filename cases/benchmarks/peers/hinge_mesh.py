@@ -12,26 +12,36 @@ Mesh level m: m cells through the blade, 2m along each block and the blade, 2m c
 the blade in y, 2m in z; blade cells 8/m x 2/m x 10/m in units of 1/4: aspect 4 : 1 : 5. Cells
 44 m^3, Q2 DoFs about 1056 m^3 (m = 2: 8.5k, m = 10: 1.06M). The blade roots are re-entrant edges,
 so the strain energy (the QoI: rotational stiffness 2 U / theta^2) converges below the smooth order.
+GRADE > 1 grades the cells toward those edges: along x every segment toward both its ends (the blade's
+roots, and the blocks' clamped and turned faces too: graded toward the roots alone, a block's far cells
+grew to most of its length and stiffened it), along y in the blocks toward the blade's faces; the
+longest cell of each segment GRADE times its shortest (lengths in geometric progression, as
+meshes/graded_layers.geo).
 
-    hinge_mesh.py inp M FILE    writes FILE: C3D8 elements, node sets clamped and turned, element set hinge
+    hinge_mesh.py inp M FILE [GRADE]    writes FILE: C3D8 elements, node sets clamped and turned, element
+                                        set hinge
 """
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from calculix_common import graded  # noqa: E402
 
 LENGTH_BLOCK, LENGTH_BLADE, HALF_HEIGHT, HALF_T, WIDTH = 10.0, 4.0, 3.0, 0.25, 5.0
 ANGLE_DEG, CENTER = 1.0, (12.0, 0.0)
 
 
-def grid(m):
+def grid(m, grade=1.0):
     """Grid lines in x, y, z and the set of cells (i, j, k) that belong to the part."""
-    def lines(segments):  # [(start, end, cells), ...] -> the grid coordinates
+    def lines(segments):  # [(start, end, cells, graded end: 0 both, 1 start, 2 end, None uniform)]
         out = [segments[0][0]]
-        for a, b, n in segments:
-            out += [a + (b - a) * (s + 1) / n for s in range(n)]
+        for a, b, n, ends in segments:
+            out += graded(a, b, n, grade if ends is not None else 1.0, ends or 0)[1:]
         return out
     b0, b1 = LENGTH_BLOCK, LENGTH_BLOCK + LENGTH_BLADE
-    xs = lines([(0.0, b0, 2 * m), (b0, b1, 2 * m), (b1, b1 + LENGTH_BLOCK, 2 * m)])
-    ys = lines([(-HALF_HEIGHT, -HALF_T, 2 * m), (-HALF_T, HALF_T, m), (HALF_T, HALF_HEIGHT, 2 * m)])
-    zs = lines([(0.0, WIDTH, 2 * m)])
+    xs = lines([(0.0, b0, 2 * m, 0), (b0, b1, 2 * m, 0), (b1, b1 + LENGTH_BLOCK, 2 * m, 0)])
+    ys = lines([(-HALF_HEIGHT, -HALF_T, 2 * m, 2), (-HALF_T, HALF_T, m, None), (HALF_T, HALF_HEIGHT, 2 * m, 1)])
+    zs = lines([(0.0, WIDTH, 2 * m, None)])
     blade_x = range(2 * m, 4 * m)
     blade_y = range(2 * m, 3 * m)
     cells = [(i, j, k) for k in range(len(zs) - 1) for j in range(len(ys) - 1) for i in range(len(xs) - 1)
@@ -40,7 +50,7 @@ def grid(m):
 
 
 def q2_dofs(m):
-    """3 x the nodes of the degree-2 (27-node) hexahedra on the level-m mesh."""
+    """3 x the nodes of the degree-2 (27-node) hexahedra on the level-m mesh (any grading)."""
     xs, ys, zs, cells = grid(m)
     nodes = {(2 * i + a, 2 * j + b, 2 * k + c) for i, j, k in cells for a in range(3) for b in range(3) for c in range(3)}
     return 3 * len(nodes)
@@ -54,8 +64,8 @@ def turned_displacement(x, y):
     return dx * (math.cos(t) - 1) - dy * math.sin(t), dx * math.sin(t) + dy * (math.cos(t) - 1)
 
 
-def write_inp(m, path):
-    xs, ys, zs, cells = grid(m)
+def write_inp(m, path, grade=1.0):
+    xs, ys, zs, cells = grid(m, grade)
     nx, ny = len(xs), len(ys)
 
     def node(i, j, k):
@@ -67,7 +77,8 @@ def write_inp(m, path):
                node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)]
         used.update(ids)
         elements.append(ids)
-    lines = ["** 3D blade flexure hinge, level m = %d (cases/benchmarks/peers/hinge_mesh.py)" % m, "*NODE"]
+    lines = ["** 3D blade flexure hinge, level m = %d, grade %g (cases/benchmarks/peers/hinge_mesh.py)" % (m, grade),
+             "*NODE"]
     for k, z in enumerate(zs):
         for j, y in enumerate(ys):
             for i, x in enumerate(xs):
@@ -84,6 +95,6 @@ def write_inp(m, path):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 4 or sys.argv[1] != "inp":
-        sys.exit("usage: hinge_mesh.py inp M FILE")
-    write_inp(int(sys.argv[2]), sys.argv[3])
+    if len(sys.argv) not in (4, 5) or sys.argv[1] != "inp":
+        sys.exit("usage: hinge_mesh.py inp M FILE [GRADE]")
+    write_inp(int(sys.argv[2]), sys.argv[3], float(sys.argv[4]) if len(sys.argv) == 5 else 1.0)
