@@ -77,7 +77,7 @@ PROBLEMS["flexure-finite-strain"] = dict(
     case="flexure_finite_strain.prm", mesh=lambda n: {"nx": 20 * n, "ny": 4 * n, "nz": n},
     qoi=lambda q: q["reaction_moment_right_y"], fenicsx="fenicsx_flexure_finite_strain.py",
     fenicsx_qoi=lambda v: v, fenicsx_args=["direct"], fenicsx_variant="mumps", peers=["fenicsx", "calculix"],
-    calculix="calculix_flexure_finite_strain.py", calculix_args=lambda n, work: [str(n), work],
+    calculix="calculix_flexure_finite_strain.py", calculix_args=lambda n, work, grade: [str(n), work, "--grade", repr(grade)],
     calculix_qoi=lambda v: v, calculix_variant="C3D20R spooles", solve_key="time_linear_solves",
     iterations_key="newton_iterations", graded_ends=0,
     dofs=lambda n, k=2: 3 * (20 * k * n + 1) * (4 * k * n + 1) * (k * n + 1),
@@ -140,11 +140,9 @@ def run_fenicsx(n, ranks, grade=1):
 
 def run_calculix(n, grade=1):
     """One CalculiX run by the problem's helper (calculix_box.py PROBLEM N WORK [GRADE] by default)."""
-    if grade != 1 and "calculix_args" in PROBLEM:
-        return {"skipped": "the CalculiX helper of this problem meshes uniformly"}
     work = tempfile.mkdtemp(prefix="ccx-")
     script = os.path.join(HERE, "peers", PROBLEM.get("calculix", "calculix_box.py"))
-    args = PROBLEM.get("calculix_args", lambda n, work: [PROBLEM_NAME, str(n), work, repr(grade)])(n, work)
+    args = PROBLEM.get("calculix_args", lambda n, work, grade: [PROBLEM_NAME, str(n), work, repr(grade)])(n, work, grade)
     proc = subprocess.run(["/usr/bin/python3", script] + args, capture_output=True, text=True)
     shutil.rmtree(work, ignore_errors=True)
     if proc.returncode != 0:

@@ -3,7 +3,7 @@
 that do not come from the contact code: Hertz's closed form, the run without the obstacle, the
 equilibrium of the reactions, and the same run on other rank counts.
 
-    contact_checks.py hertz | ranks | motion | stop | stop_3d | former
+    contact_checks.py hertz | sphere | ranks | motion | stop | stop_3d | former
 """
 import csv
 import math
@@ -22,6 +22,7 @@ HERTZ = os.path.join(cases, "contact", "hertz_cylinder.prm")
 STOP = os.path.join(cases, "contact", "flexure_hinge_stop.prm")
 STOP_3D = os.path.join(cases, "contact", "cantilever_3d_stop.prm")
 FORMER = os.path.join(cases, "contact", "leaf_former.prm")
+SPHERE = os.path.join(cases, "contact", "hertz_sphere.prm")
 
 
 def run_with_files(case, sets=(), np=2, fields=None):
@@ -105,8 +106,58 @@ def hertz_fit(nodes):
     return math.sqrt(-intercept / slope), math.sqrt(intercept), pressure[0], len(held)
 
 
+def hertz_sphere_fit(nodes, inner=0.8):
+    """The Hertz ellipsoid p^2 = p0^2 (1 - rho^2 / a^2) fitted (least squares in rho^2) to the held
+    nodes of the top face within `inner` of the outermost held node's radius (the ring cut by the
+    contact's edge carries part of a tributary area in contact, part not). The pressure is
+    contact.csv's (nodal force over the node's share of the face). Returns (a, p0 fitted, p at the
+    origin, held nodes)."""
+    held = [n for n in nodes if n["obstacle"]]
+    rho = lambda n: math.hypot(float(n["x"]), float(n["y"]))  # noqa: E731
+    edge = max(rho(n) for n in held)
+    inside = [n for n in held if rho(n) <= inner * edge]
+    xs = [rho(n) ** 2 for n in inside]
+    ys = [float(n["pressure"]) ** 2 for n in inside]
+    k = len(inside)
+    sx, sy = sum(xs), sum(ys)
+    sxx, sxy = sum(x * x for x in xs), sum(x * y for x, y in zip(xs, ys))
+    slope = (k * sxy - sx * sy) / (k * sxx - sx ** 2)
+    intercept = (sy - slope * sx) / k
+    centre = min(held, key=rho)
+    return math.sqrt(-intercept / slope), math.sqrt(intercept), float(centre["pressure"]), len(held)
+
+
 mode = sys.argv[1] if len(sys.argv) > 1 else ""
-if mode == "hertz":
+if mode == "sphere":
+    # Hertz in 3D (rigid sphere on an elastic half-space): a = (3 F R / (4 E*))^(1/3),
+    # p0 = 3 F / (2 pi a^2), E* = E / (1 - nu^2), for the force F the run carries (the quarter
+    # model carries F / 4). The issue's bar: within 3 % at a converged mesh. The test runs the case
+    # at m = 8, k = 8 (14.7k DoFs); the case's own m = 12, k = 10 (36.5k DoFs, ~2 min) moves a by
+    # +0.9 % and p0 by -0.15 % (README), so the coarser mesh is converged to about 1 %.
+    E, nu, R = 1000.0, 0.3, 10.0
+    Es = E / (1 - nu ** 2)
+    q, curve, nodes = run_with_files(SPHERE, ["Geometry/Parameters/m=8", "Geometry/Parameters/k=8"])
+    F = 4 * abs(q["contact_force_ball_z"])
+    a_h = (3 * F * R / (4 * Es)) ** (1.0 / 3.0)
+    p0_h = 3 * F / (2 * math.pi * a_h ** 2)
+    a, p0, p_centre, held = hertz_sphere_fit(nodes)
+    print("F = %.6g, %d held nodes; a %.5f (Hertz %.5f, %+.2f %%), p0 fitted %.4f, at the origin %.4f "
+          "(Hertz %.4f: %+.2f %%, %+.2f %%); Newton %s per step" %
+          (F, held, a, a_h, 100 * (a / a_h - 1), p0, p_centre, p0_h, 100 * (p0 / p0_h - 1),
+           100 * (p_centre / p0_h - 1), [r["newton_iterations"] for r in curve]))
+    check(abs(q["contact_force_ball_z"] + q["reaction_force_bottom_z"]) <= 1e-8 * F,
+          "the contact force %.8g balances the reaction at the bottom %.8g" % (q["contact_force_ball_z"],
+                                                                              q["reaction_force_bottom_z"]))
+    check(0.02 < a_h / R < 0.1, "a/R = %.4f: the small-strain, small-contact regime of Hertz" % (a_h / R))
+    no_penetration(q, nodes, "sphere")
+    for name, value, reference in (("contact radius a", a, a_h), ("peak pressure p0 (fitted)", p0, p0_h),
+                                   ("pressure at the origin", p_centre, p0_h)):
+        check(abs(value / reference - 1) < 0.03, "%s within 3 %% of Hertz (%+.2f %%)" % (name, 100 * (value / reference - 1)))
+    # The README's figures (Contact), to 3 units of their last digit.
+    for value, reference, figure, name in ((a, a_h, "-1.0", "a"), (p0, p0_h, "-0.65", "p0 fitted"),
+                                           (p_centre, p0_h, "-0.85", "p at the origin")):
+        readme_figure(value / reference - 1, figure, "m = 8: %s against Hertz, %%" % name, scale=100)
+elif mode == "hertz":
     # Plane strain Hertz (rigid plane): b = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi b), E* = E/(1 - nu^2),
     # for the force P the run itself carries. nb = 20 and 40 cells across b: the finer is the
     # answer, the coarser shows how far it still moves (the README's figures).
@@ -267,5 +318,5 @@ elif mode == "former":
               % (axis, q["reaction_force_left_" + axis], q["contact_force_former_" + axis], load, residual))
     no_penetration(q, nodes, "leaf on its former")
 else:
-    unknown_mode(mode, ("hertz", "ranks", "motion", "stop", "stop_3d", "former"))
+    unknown_mode(mode, ("hertz", "sphere", "ranks", "motion", "stop", "stop_3d", "former"))
 finish()

@@ -28,8 +28,10 @@ is CalculiX's 0.005. Two threads (OMP_NUM_THREADS, CCX_NPROC_EQUATION_SOLVER).
 
 Prints one JSON line: DoFs, qoi (= M_y), both moments, u_z at (10, 2.5, 0.5), the load factors of
 the increments and the Newton iterations from the .sta file, wall time of the ccx process, peak memory.
+--grade G: the cells along x graded toward both ends, the longest G times the shortest, as
+meshes/graded_layers.geo grades ours (`Geometry/Parameters/grade_x`, `graded_ends = 0`).
 Run: calculix_flexure_finite_strain.py N WORK [--element C3D20R|C3D20] [--law neo-hooke|isochoric]
-     [--load rigid|boundary] [--steps ours|auto] [--tolerance tight|default] [--deck-only]"""
+     [--load rigid|boundary] [--steps ours|auto] [--tolerance tight|default] [--grade G] [--deck-only]"""
 import argparse
 import json
 import math
@@ -38,7 +40,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from calculix_common import Hex20Grid, run_ccx, uniform  # noqa: E402
+from calculix_common import Hex20Grid, graded, run_ccx, uniform  # noqa: E402
 
 E, NU = 89.5, 0.48  # semiflex in mm-N-MPa (solver/fe/materials/library.dat)
 MU, BULK = E / (2 * (1 + NU)), E / (3 * (1 - 2 * NU))
@@ -55,6 +57,7 @@ def arguments():
     p.add_argument("--load", default="rigid", choices=["rigid", "boundary"])
     p.add_argument("--steps", default="ours", choices=["ours", "auto"])
     p.add_argument("--tolerance", default="tight", choices=["tight", "default"])
+    p.add_argument("--grade", type=float, default=1.0, help="cells along x graded toward both ends (1: uniform)")
     p.add_argument("--deck-only", action="store_true", help="write WORK/job.inp, do not run ccx")
     return p.parse_args()
 
@@ -154,7 +157,7 @@ def increments(sta):
 def main():
     args = arguments()
     n = args.n
-    mesh = Hex20Grid((uniform(0.0, 20.0, 20 * n), uniform(-2.5, 2.5, 4 * n), uniform(-0.5, 0.5, n)))
+    mesh = Hex20Grid((graded(0.0, 20.0, 20 * n, args.grade, 0), uniform(-2.5, 2.5, 4 * n), uniform(-0.5, 0.5, n)))
     os.makedirs(args.work, exist_ok=True)
     lines, rot = deck(args, mesh)
     if args.deck_only:
