@@ -50,6 +50,7 @@ BAD = {
     "flexure_hinge_2d": ("plane stress", "t=10", "0 < t < T"),
     "flexure_hinge_3d": ("3d", "t=0", "0 < t < T"),
     "hertz_cylinder_2d": ("plane stress", "nb=0", "nb >= 1"),
+    "hertz_block_3d": ("3d", "m=0", "m >= 1"),
     "jansen_leg": ("plane stress", "rp=15", "0 < rp < w/2"),
     "leaf_coupling": ("3d", "b=0", "L, a, b > 0"),
     "leaf_spring": ("3d", "nb=0", "nb >= 1"),
