@@ -11,7 +11,7 @@ value. --degree 2,3,4 runs our ladder at each element degree (--set "Discretizat
 the DoF estimate that skips the assembled methods scales with K); --max-wall stops one of our ladders
 after a run longer than that; --targets 0.01,0.003,0.001 adds the wall time at which each ladder
 reaches those errors and its ratio to each peer; --name writes <name>_speed.* instead of <problem>_speed.*;
---grade 1,50 runs every ladder (ours and CalculiX's) also on meshes graded along x, the longest cell 50
+--integration full,reduced runs ours with each Discretization/Integration; --grade 1,50 runs every ladder (ours and CalculiX's) also on meshes graded along x, the longest cell 50
 times the shortest (meshes/graded_layers.geo; toward the clamp of the cantilever, both ends of the leaf
 and the strip; the hinge's toward its blade roots in x and y, peers/hinge_mesh.py).
 
@@ -95,12 +95,12 @@ def graded_mesh(grade):
     return {"grade_x": grade, "graded_ends": PROBLEM["graded_ends"]}
 
 
-def run_ours(n, method, ranks, degree=2, grade=1):
+def run_ours(n, method, ranks, degree=2, grade=1, integration="full"):
     work = tempfile.mkdtemp(prefix="bench-")
     out = os.path.join(work, "run")
     cmd = ["mpirun", "-np", str(ranks), SOLVER, os.path.join(HERE, PROBLEM["case"]),
            "--set", "Linear solver/Method=" + method, "--set", "Output/Directory=" + out,
-           "--set", "Discretization/Element degree=%d" % degree]
+           "--set", "Discretization/Element degree=%d" % degree, "--set", "Discretization/Integration=" + integration]
     for name, value in dict(PROBLEM["mesh"](n), **graded_mesh(grade)).items():
         cmd += ["--set", "Geometry/Parameters/%s=%s" % (name, value)]
     if "mesh_file" in PROBLEM:  # the mesh the peers solve, written for this level
@@ -232,6 +232,9 @@ def parse_arguments():
     parser.add_argument("--grade", default="1", help="mesh grading(s) along x, comma-separated: the longest "
                         "cell over the shortest (1 uniform); each is run on every ladder, ours and the peers' "
                         "where they can mesh it, the method column then reads e.g. 'auto, graded 50'")
+    parser.add_argument("--integration", default="full", help="our Discretization/Integration value(s), "
+                        "comma-separated (full, reduced): each is run on every ladder of ours, the method "
+                        "column then reads e.g. 'auto, reduced'")
     parser.add_argument("--reference", type=float, default=None,
                         help="the reference QoI every error is measured against; default: Richardson on our "
                         "three finest meshes at the highest degree (first method, first grade), the same for all")
@@ -255,6 +258,7 @@ def parse_arguments():
     args.method_list = [m for m in args.methods.split(",") if m]
     args.degrees = [int(v) for v in args.degree.split(",") if v]
     args.grades = [float(v) for v in args.grade.split(",") if v]
+    args.integrations = [v for v in args.integration.split(",") if v]
     args.peer_list = [p for p in args.peers.split(",") if p and p in PROBLEMS[args.problem].get("peers", ["fenicsx", "calculix"])]
     if any(g < 1 for g in args.grades) or (args.grades != [1] and "graded_ends" not in PROBLEMS[args.problem]):
         sys.exit("speed_vs_peers.py: --grade %s: gradings >= 1, and only for problems with graded meshes (%s)" % (
@@ -265,31 +269,31 @@ def parse_arguments():
     return args
 
 
-def variant_label(base, degree, grade, args):
-    """The method column: the method or solver, then the degree and the grading where they vary."""
+def variant_label(base, degree, grade, args, integration="full"):
+    """The method column: the method or solver, then the degree, the grading and the integration
+    where they vary."""
     label = "%s Q%d" % (base, degree) if args.degrees != [2] else base
-    return label + (", graded %g" % grade if grade != 1 else "")
+    return label + (", graded %g" % grade if grade != 1 else "") + (", reduced" if integration == "reduced" else "")
 
 
 def run_ladders(args):
     """Every run, mesh by mesh: ours at each (method, degree, grade), then each peer at each grade."""
-    rows, stopped = [], set()  # stopped: our (method, degree, grade) ladders past --max-wall
+    rows, stopped = [], set()  # stopped: our (method, degree, grade, integration) ladders past --max-wall
     if "fenicsx" in args.peer_list:  # warm FEniCSx's JIT cache so no run pays for compiling forms
         run_fenicsx(1, 1)
     for n in args.ladder:
         for grade in args.grades:
-            for k in args.degrees:
-                dofs = PROBLEM["dofs"](n, k)
-                for m in args.method_list:
-                    cap = {"direct": args.direct_max_dofs, "cg-amg": args.amg_max_dofs}.get(m, float("inf"))
-                    if dofs > cap or (m, k, grade) in stopped:
-                        continue
-                    r = run_ours(n, m, args.ranks, k, grade)
-                    r.update(code="compliant", variant=variant_label(m, k, grade, args), n=n, degree=k)
-                    rows.append(r)
-                    print(json.dumps(r), flush=True)
-                    if r.get("wall_s", 0) > args.max_wall or "skipped" in r:
-                        stopped.add((m, k, grade))
+            for k, m, integration in [(k, m, i) for i in args.integrations for k in args.degrees
+                                      for m in args.method_list]:
+                cap = {"direct": args.direct_max_dofs, "cg-amg": args.amg_max_dofs}.get(m, float("inf"))
+                if PROBLEM["dofs"](n, k) > cap or (m, k, grade, integration) in stopped:
+                    continue
+                r = run_ours(n, m, args.ranks, k, grade, integration)
+                r.update(code="compliant", variant=variant_label(m, k, grade, args, integration), n=n, degree=k)
+                rows.append(r)
+                print(json.dumps(r), flush=True)
+                if r.get("wall_s", 0) > args.max_wall or "skipped" in r:
+                    stopped.add((m, k, grade, integration))
             if n > args.peer_max_n:
                 continue
             for peer in args.peer_list:

@@ -11,6 +11,7 @@
 #include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include "discretization/reduced_integration.h"
 #include "mesh/curved_simplex_mapping.h"
 #include "mesh/mesh_reader.h"
 
@@ -152,9 +153,14 @@ namespace compliant
           }
         else
           mapping = std::make_unique<MappingQ<dim>>(mapping_degree(geometry.curved, curved_degree));
-        quadrature      = std::make_unique<QGauss<dim>>(degree + 1);
+        quadrature = parameters.reduced_integration && !with_pressure ?
+                       std::make_unique<Quadrature<dim>>(
+                         stabilized_reduced_quadrature<dim>(degree, parameters.hourglass_stiffness)) :
+                       std::make_unique<QGauss<dim>>(degree + 1);
         face_quadrature = std::make_unique<QGauss<dim - 1>>(degree + 1);
       }
+    else if (parameters.reduced_integration)
+      throw std::invalid_argument("Discretization/Integration = reduced needs quadrilaterals or hexahedra");
     else if (imperfection)
       throw std::invalid_argument("Geometry/Imperfection needs quadrilaterals or hexahedra");
     else if (triangulation.all_reference_cells_are_simplex() && !with_pressure)

@@ -162,6 +162,8 @@ namespace compliant
     };
     using Operator = fast_solver::ElasticityOperator<dim, double>;
     using Solver   = fast_solver::PMultigridSolver<dim, Operator>;
+    // Integration = reduced: every level of degree >= 2 as the model (the degree-1 level stays full).
+    const double hourglass = parameters.reduced_integration ? parameters.hourglass_stiffness : -1.;
     // A dual of the same matrix reuses the primal's solver (keep_solver_for_duals).
     const bool reused = kept_solver != nullptr;
     const auto built  = reused ? kept_solver : std::make_shared<Solver>(
@@ -169,9 +171,9 @@ namespace compliant
       [this](const DoFHandler<dim> &dofs, AffineConstraints<double> &level_constraints) {
         add_support_constraints(dofs, level_constraints, true);
       },
-      [&lame](Operator &level_operator, const Mapping<dim> &level_mapping,
-              const DoFHandler<dim> &dofs, const AffineConstraints<double> &level_constraints) {
-        level_operator.reinit(level_mapping, dofs, level_constraints, lame);
+      [&lame, hourglass](Operator &level_operator, const Mapping<dim> &level_mapping,
+                         const DoFHandler<dim> &dofs, const AffineConstraints<double> &level_constraints) {
+        level_operator.reinit(level_mapping, dofs, level_constraints, lame, hourglass);
       },
       settings, communicator);
     Solver &solver = *built;

@@ -22,8 +22,12 @@ namespace compliant::fast_solver
 
     // constraints must be homogeneous (hanging nodes, zero supports): the operator acts on
     // the correction from a lifting that carries the prescribed values.
+    // hourglass_stiffness >= 0 on a level of degree >= 2: the stiffness integrated with p Gauss
+    // points per direction, plus that fraction of the fully integrated one
+    // (discretization/reduced_integration.h); negative or degree 1: p + 1 points.
     void reinit(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler,
-                const dealii::AffineConstraints<Number> &constraints, const LameParameters &lame);
+                const dealii::AffineConstraints<Number> &constraints, const LameParameters &lame,
+                double hourglass_stiffness = -1);
 
   private:
     void apply_cells(VectorType &dst, const VectorType &src, bool plain) const override;
@@ -33,5 +37,8 @@ namespace compliant::fast_solver
 
     // Per cell batch: the Lame parameters of each lane's cell.
     std::vector<dealii::VectorizedArray<Number>> lambda, mu;
+    bool   reduced = false;
+    double hourglass = 0; // the fully integrated share e when reduced
+
   };
 } // namespace compliant::fast_solver

@@ -9,6 +9,8 @@
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/tools.h>
 
+#include "discretization/reduced_integration.h"
+
 #include <stdexcept>
 
 namespace compliant::fast_solver
@@ -17,23 +19,29 @@ namespace compliant::fast_solver
 
   namespace
   {
-    // The cell kernel for one polynomial degree: sigma = lambda tr(eps) I + 2 mu eps at every
-    // Gauss point (degree + 1 per direction, exact for affine cells).
-    template <int dim, int degree, typename Number>
+    // The cell kernel for one polynomial degree and one Gauss rule (n_q points per direction,
+    // MatrixFree rule `quad`): sigma = scale (lambda tr(eps) I + 2 mu eps) at every point. Full
+    // integration is n_q = degree + 1 with scale 1 (exact for affine cells); reduced integration adds
+    // n_q = degree with scale 1 - e to n_q = degree + 1 with scale e.
+    template <int dim, int degree, int n_q, typename Number>
     struct Kernel
     {
-      using Evaluation = FEEvaluation<dim, degree, degree + 1, dim, Number>;
+      using Evaluation = FEEvaluation<dim, degree, n_q, dim, Number>;
       using VectorType = LinearAlgebra::distributed::Vector<Number>;
 
-      static void stress_at_quadrature_points(Evaluation &phi, const VectorizedArray<Number> &lambda,
-                                              const VectorizedArray<Number> &mu)
+      unsigned int quad  = 0;
+      Number       scale = 1;
+
+      void stress_at_quadrature_points(Evaluation &phi, const VectorizedArray<Number> &lambda,
+                                       const VectorizedArray<Number> &mu) const
       {
         phi.evaluate(EvaluationFlags::gradients);
+        const VectorizedArray<Number> two_mu = 2 * scale * mu, l = scale * lambda;
         for (unsigned int q = 0; q < phi.n_q_points; ++q)
           {
             const SymmetricTensor<2, dim, VectorizedArray<Number>> eps = phi.get_symmetric_gradient(q);
-            SymmetricTensor<2, dim, VectorizedArray<Number>> sigma = (mu + mu) * eps;
-            const VectorizedArray<Number> lambda_trace = lambda * trace(eps);
+            SymmetricTensor<2, dim, VectorizedArray<Number>> sigma = two_mu * eps;
+            const VectorizedArray<Number> lambda_trace = l * trace(eps);
             for (unsigned int d = 0; d < dim; ++d)
               sigma[d][d] += lambda_trace;
             phi.submit_symmetric_gradient(sigma, q);
@@ -41,12 +49,12 @@ namespace compliant::fast_solver
         phi.integrate(EvaluationFlags::gradients);
       }
 
-      static void apply(const MatrixFree<dim, Number> &data, VectorType &dst, const VectorType &src,
-                        const std::pair<unsigned int, unsigned int> &range,
-                        const std::vector<VectorizedArray<Number>>   &lambda,
-                        const std::vector<VectorizedArray<Number>>   &mu, const bool plain)
+      void apply(const MatrixFree<dim, Number> &data, VectorType &dst, const VectorType &src,
+                 const std::pair<unsigned int, unsigned int> &range,
+                 const std::vector<VectorizedArray<Number>>   &lambda,
+                 const std::vector<VectorizedArray<Number>>   &mu, const bool plain) const
       {
-        Evaluation phi(data);
+        Evaluation phi(data, 0, quad);
         for (unsigned int cell = range.first; cell < range.second; ++cell)
           {
             phi.reinit(cell);
@@ -59,40 +67,57 @@ namespace compliant::fast_solver
           }
       }
 
-      static void diagonal(const MatrixFree<dim, Number> &data, VectorType &diagonal,
-                           const std::vector<VectorizedArray<Number>> &lambda,
-                           const std::vector<VectorizedArray<Number>> &mu)
+      // Adds this rule's share to `diagonal`.
+      void diagonal(const MatrixFree<dim, Number> &data, VectorType &diagonal,
+                    const std::vector<VectorizedArray<Number>> &lambda,
+                    const std::vector<VectorizedArray<Number>> &mu) const
       {
-        MatrixFreeTools::compute_diagonal<dim, degree, degree + 1, dim, Number, VectorizedArray<Number>>(
-          data, diagonal, [&](Evaluation &phi) {
+        MatrixFreeTools::compute_diagonal<dim, degree, n_q, dim, Number, VectorizedArray<Number>>(
+          data, diagonal,
+          [&](Evaluation &phi) {
             const unsigned int cell = phi.get_current_cell_index();
             stress_at_quadrature_points(phi, lambda[cell], mu[cell]);
-          });
+          },
+          0, quad);
       }
 
-      static void matrix(const MatrixFree<dim, Number> &data, const AffineConstraints<Number> &constraints,
-                         PETScWrappers::MPI::SparseMatrix &matrix,
-                         const std::vector<VectorizedArray<Number>> &lambda,
-                         const std::vector<VectorizedArray<Number>> &mu)
+      // Adds this rule's share to `matrix`.
+      void matrix(const MatrixFree<dim, Number> &data, const AffineConstraints<Number> &constraints,
+                  PETScWrappers::MPI::SparseMatrix &matrix,
+                  const std::vector<VectorizedArray<Number>> &lambda,
+                  const std::vector<VectorizedArray<Number>> &mu) const
       {
-        MatrixFreeTools::compute_matrix<dim, degree, degree + 1, dim, Number, VectorizedArray<Number>>(
-          data, constraints, matrix, [&](Evaluation &phi) {
+        MatrixFreeTools::compute_matrix<dim, degree, n_q, dim, Number, VectorizedArray<Number>>(
+          data, constraints, matrix,
+          [&](Evaluation &phi) {
             const unsigned int cell = phi.get_current_cell_index();
             stress_at_quadrature_points(phi, lambda[cell], mu[cell]);
-          });
+          },
+          0, quad);
       }
     };
 
-    // Runs F<degree>::call(args...) for the run-time degree (1-4: the element degrees offered).
+    // Runs visitor(kernel) for each rule of the run-time degree (1-4: the element degrees offered):
+    // the full rule, and with reduced integration the reduced one too, each with its share.
     template <int dim, typename Number, typename Visitor>
-    void dispatch(const unsigned int degree, const Visitor &visitor)
+    void for_each_rule(const unsigned int degree, const bool reduced, const double hourglass, const Visitor &visitor)
     {
+      const auto run = [&](auto full, auto reduced_rule) {
+        full.scale = reduced ? hourglass : 1;
+        visitor(full);
+        if (reduced)
+          {
+            reduced_rule.quad  = 1;
+            reduced_rule.scale = 1 - hourglass;
+            visitor(reduced_rule);
+          }
+      };
       switch (degree)
         {
-          case 1: visitor(Kernel<dim, 1, Number>()); break;
-          case 2: visitor(Kernel<dim, 2, Number>()); break;
-          case 3: visitor(Kernel<dim, 3, Number>()); break;
-          case 4: visitor(Kernel<dim, 4, Number>()); break;
+          case 1: run(Kernel<dim, 1, 2, Number>(), Kernel<dim, 1, 1, Number>()); break;
+          case 2: run(Kernel<dim, 2, 3, Number>(), Kernel<dim, 2, 2, Number>()); break;
+          case 3: run(Kernel<dim, 3, 4, Number>(), Kernel<dim, 3, 3, Number>()); break;
+          case 4: run(Kernel<dim, 4, 5, Number>(), Kernel<dim, 4, 4, Number>()); break;
           default:
             throw std::invalid_argument("matrix-free elasticity: element degree " +
                                         std::to_string(degree) + " is not compiled (1-4)");
@@ -104,9 +129,12 @@ namespace compliant::fast_solver
   void ElasticityOperator<dim, Number>::reinit(const Mapping<dim>              &mapping_in,
                                                const DoFHandler<dim>           &dof_handler,
                                                const AffineConstraints<Number> &constraints_in,
-                                               const LameParameters            &lame)
+                                               const LameParameters            &lame,
+                                               const double                     hourglass_stiffness)
   {
-    this->reinit_matrix_free(mapping_in, dof_handler, constraints_in);
+    reduced   = hourglass_stiffness >= 0 && dof_handler.get_fe().degree >= 2;
+    hourglass = reduced ? hourglass_stiffness : 0;
+    this->reinit_matrix_free(mapping_in, dof_handler, constraints_in, reduced);
     const auto        &data      = *this->data;
     const unsigned int n_batches = data.n_cell_batches();
     lambda.assign(n_batches, VectorizedArray<Number>());
@@ -124,23 +152,20 @@ namespace compliant::fast_solver
   void ElasticityOperator<dim, Number>::apply_cells(VectorType &dst, const VectorType &src,
                                                     const bool plain) const
   {
-    dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
-      using K = decltype(kernel);
-      this->data->template cell_loop<VectorType, VectorType>(
-        [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
-            const std::pair<unsigned int, unsigned int> &range) {
-          K::apply(mf, d, s, range, lambda, mu, plain);
-        },
-        dst, src, true);
-    });
+    this->data->template cell_loop<VectorType, VectorType>(
+      [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
+          const std::pair<unsigned int, unsigned int> &range) {
+        for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass,
+                                   [&](const auto &kernel) { kernel.apply(mf, d, s, range, lambda, mu, plain); });
+      },
+      dst, src, true);
   }
 
   template <int dim, typename Number>
   void ElasticityOperator<dim, Number>::add_kernel_diagonal(VectorType &diagonal) const
   {
-    dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
-      decltype(kernel)::diagonal(*this->data, diagonal, lambda, mu);
-    });
+    for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass,
+                               [&](const auto &kernel) { kernel.diagonal(*this->data, diagonal, lambda, mu); });
   }
 
   template <int dim, typename Number>
@@ -150,8 +175,9 @@ namespace compliant::fast_solver
     // and div phi_i = d_c phi, so K_ii = sum_q JxW (mu |grad phi|^2 + (lambda + mu) d_c phi^2).
     const DoFHandler<dim>  &dof_handler = this->data->get_dof_handler();
     const auto             &fe          = dof_handler.get_fe();
-    FEValues<dim>           fe_values(*this->mapping, fe, QGauss<dim>(this->fe_degree + 1),
-                            update_gradients | update_JxW_values);
+    const Quadrature<dim>   rule = reduced ? stabilized_reduced_quadrature<dim>(this->fe_degree, hourglass) :
+                                         Quadrature<dim>(QGauss<dim>(this->fe_degree + 1));
+    FEValues<dim>           fe_values(*this->mapping, fe, rule, update_gradients | update_JxW_values);
     const unsigned int      n = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     for (unsigned int batch = 0; batch < this->data->n_cell_batches(); ++batch)
@@ -179,8 +205,8 @@ namespace compliant::fast_solver
   template <int dim, typename Number>
   void ElasticityOperator<dim, Number>::add_kernel_matrix(PETScWrappers::MPI::SparseMatrix &matrix) const
   {
-    dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
-      decltype(kernel)::matrix(*this->data, *this->constraints, matrix, lambda, mu);
+    for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+      kernel.matrix(*this->data, *this->constraints, matrix, lambda, mu);
     });
   }
 } // namespace compliant::fast_solver

@@ -15,7 +15,8 @@ namespace compliant::fast_solver
   template <int dim, typename Number>
   void MatrixFreeOperatorBase<dim, Number>::reinit_matrix_free(const Mapping<dim>              &mapping_in,
                                                                const DoFHandler<dim>           &dof_handler,
-                                                               const AffineConstraints<Number> &constraints_in)
+                                                               const AffineConstraints<Number> &constraints_in,
+                                                               const bool with_reduced_quadrature)
   {
     fe_degree   = dof_handler.get_fe().degree;
     constraints = &constraints_in;
@@ -30,7 +31,11 @@ namespace compliant::fast_solver
     additional_data.tasks_parallel_scheme = MatrixFree<dim, Number>::AdditionalData::none;
     additional_data.mapping_update_flags  = update_gradients | update_JxW_values;
     data = std::make_shared<MatrixFree<dim, Number>>();
-    data->reinit(mapping_in, dof_handler, constraints_in, QGauss<1>(fe_degree + 1), additional_data);
+    std::vector<Quadrature<1>> rules{QGauss<1>(fe_degree + 1)};
+    if (with_reduced_quadrature)
+      rules.push_back(QGauss<1>(fe_degree));
+    data->reinit(mapping_in, std::vector<const DoFHandler<dim> *>{&dof_handler},
+                 std::vector<const AffineConstraints<Number> *>{&constraints_in}, rules, additional_data);
 
     // Every constrained DoF this rank owns gets an identity row: the Krylov vectors stay zero there.
     constrained_local_dofs.clear();

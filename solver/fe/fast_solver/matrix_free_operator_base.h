@@ -55,8 +55,11 @@ namespace compliant::fast_solver
   protected:
     // constraints must be homogeneous (hanging nodes, supports held at zero): the operator acts
     // on the correction from a lifting that carries the prescribed values.
+    // with_reduced_quadrature: a second rule (index 1) of p Gauss points per direction beside the
+    // p + 1 of rule 0 (Discretization/Integration = reduced).
     void reinit_matrix_free(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler,
-                            const dealii::AffineConstraints<Number> &constraints);
+                            const dealii::AffineConstraints<Number> &constraints,
+                            bool with_reduced_quadrature = false);
 
     // dst = A src cell by cell, src read with (plain = false) or without constraint resolution.
     virtual void apply_cells(VectorType &dst, const VectorType &src, bool plain) const = 0;

@@ -223,6 +223,23 @@ namespace compliant
           throw InputError("case file '" + file + "': " + first_lines(e.what()));
         }
     }
+
+    // Discretization/Integration = reduced is built for the linear static stiffness (assembled and
+    // matrix-free); the finite-strain residual and tangent, mass and geometric stiffness keep p + 1.
+    void check_reduced_integration(const CaseParameters &p)
+    {
+      const std::string where = "case file '" + p.case_file + "', Discretization/";
+      if (p.reduced_integration && p.analysis != "linear static")
+        throw InputError(where + "Integration = reduced: for linear static analyses, not " + p.analysis +
+                         " (its finite-strain, mass or geometric stiffness stay fully integrated)");
+      if (p.reduced_integration && (p.element_degree < 2 || p.formulation == Formulation::mixed))
+        throw InputError(where + "Integration = reduced needs Element degree 2 to 4 and Formulation = "
+                         "displacement (one Gauss point per direction leaves a degree-1 cell without "
+                         "stiffness)");
+      if (p.reduced_integration && !(p.hourglass_stiffness > 0))
+        throw InputError(where + "Hourglass stiffness: expected a fraction in (0, 1] with Integration = "
+                         "reduced (0 leaves the hourglass modes free), got 0");
+    }
   } // namespace
 
   ParsedParameterFile read_parameter_file(const CommandLine      &command_line,
@@ -317,7 +334,10 @@ namespace compliant
     p.curved_boundaries  = prm.get_bool("Curved boundaries");
     p.curved_mapping_degree = prm.get_integer("Curved mapping degree");
     p.formulation        = prm.get("Formulation") == "mixed" ? Formulation::mixed : Formulation::displacement;
+    p.reduced_integration = prm.get("Integration") == "reduced";
+    p.hourglass_stiffness = prm.get_double("Hourglass stiffness");
     prm.leave_subsection();
+    check_reduced_integration(p);
 
     prm.enter_subsection("Material");
     p.thickness   = prm.get_double("Thickness");

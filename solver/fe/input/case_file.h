@@ -63,6 +63,10 @@ namespace compliant
     // element's (isoparametric).
     unsigned int curved_mapping_degree = 0;
     Formulation  formulation        = Formulation::displacement; // linear analyses
+    // Discretization/Integration = reduced: p Gauss points per direction for the stiffness, plus
+    // hourglass_stiffness times the fully integrated one (discretization/reduced_integration.h).
+    bool         reduced_integration = false;
+    double       hourglass_stiffness = 0.03;
     // Local refinements after the global ones, one set of refine flags (per active cell) per
     // cycle: set by the model ladder's adaptive rungs, never read from the case file.
     std::vector<std::vector<bool>> adaptive_refinements;

@@ -14,6 +14,9 @@ namespace compliant
     {
       const TargetSettings target = read_target_settings(const_cast<dealii::ParameterHandler &>(context.prm));
       const auto          &p      = context.parameters;
+      if (target.relative_error > 0 && p.reduced_integration)
+        throw InputError("case file '" + p.case_file + "', Discretization/Integration = reduced: the model "
+                         "ladder (Target/Relative error > 0) compares fully integrated rungs; set one of them");
       if (target.relative_error > 0)
         return p.dimension == 2 ? run_model_ladder<2>(context, target) : run_model_ladder<3>(context, target);
       if (!target.paired_model.empty())

@@ -1,0 +1,81 @@
+#!/usr/bin/python3
+"""Discretization/Integration = reduced (issue 30, item 1): the stiffness of Q_p integrated with p
+Gauss points per direction plus e = Hourglass stiffness times the fully integrated one.
+
+    reduced_integration_checks.py SOLVER SOURCE_ROOT
+
+References (none from this option):
+- the 3D cantilever of cases/benchmarks/cantilever.prm (10 x 1 x 1, E = 1000, nu = 0.3, unit body
+  load, clamped): tip deflection 15.0228845, Richardson on our fully integrated Q2 at n = 4, 8, 16
+  (cantilever_speed.md; the n = 4, 6, 8 triple gives 15.02263, so +- 2e-5 relative);
+- the thin leaf in torsion of cases/benchmarks/leaf_torsion.prm: strain energy 0.00537340799
+  (Richardson on our uniform Q4 at m = 4, 6, 8, up to 5.1M DoFs; +- 1e-4 relative).
+Checks: the README's errors at n = 2 and m = 2 (reduced against full on the same cells), the
+matrix-free p-multigrid and MUMPS on the same reduced stiffness agree (the operator and the
+assembled matrix integrate alike), the top-fibre stress at mid-span against beam theory (where the
+stabilized hourglass modes show), and the refusals.
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+from case_checks import check, finish, readme_figure
+
+solver, root = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+CANTILEVER = os.path.join(root, "cases", "benchmarks", "cantilever.prm")
+LEAF = os.path.join(root, "cases", "benchmarks", "leaf_torsion.prm")
+TIP, ENERGY = 15.0228845, 0.00537340799
+work = tempfile.mkdtemp(prefix="compliant-reduced-")
+REDUCED = ["Discretization/Integration=reduced"]
+
+
+def run(case, sets, name):
+    out = os.path.join(work, name)
+    cmd = ["mpirun", "-np", "2", solver, case, "--set", "Output/Directory=" + out]
+    for s in sets:
+        cmd += ["--set", s]
+    p = subprocess.run(cmd, capture_output=True, text=True, env=ENV)
+    if p.returncode != 0:
+        raise RuntimeError("%s failed: %s" % (name, p.stderr[-600:]))
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f)["quantities"]
+
+
+try:
+    beam = ["Geometry/Parameters/ny=2", "Geometry/Parameters/nz=2",
+            "Quantities/Stress points=top: 5 0 0.5"]
+    full = run(CANTILEVER, beam + ["Linear solver/Method=direct"], "full")
+    direct = run(CANTILEVER, beam + REDUCED + ["Linear solver/Method=direct"], "direct")
+    matrix_free = run(CANTILEVER, beam + REDUCED + ["Linear solver/Method=matrix-free"], "matrix-free")
+    tip_full, tip = -full["displacement_tip_z"] / TIP - 1, -direct["displacement_tip_z"] / TIP - 1
+    readme_figure(tip_full, "-3.3e-3", "cantilever n = 2, full integration: error of the tip")
+    readme_figure(tip, "-2.6e-4", "cantilever n = 2, reduced: error of the tip")
+    gap = abs(matrix_free["displacement_tip_z"] / direct["displacement_tip_z"] - 1)
+    check(gap < 1e-8, "cantilever n = 2, reduced: matrix-free and MUMPS tips agree to %.1e (< 1e-8)" % gap)
+    # Beam theory at mid-span: M = q (L - x)^2 / 2 = 12.5, sigma = M (h/2) / I = 75 (3D: within 1 %).
+    readme_figure(full["stress_top_xx"] / 75 - 1, "-5.2e-3", "top fibre at mid-span, full, against 75")
+    readme_figure(direct["stress_top_xx"] / 75 - 1, "5.3e-2", "top fibre at mid-span, reduced, against 75")
+
+    leaf_mesh = ["Geometry/Parameters/nx=10", "Geometry/Parameters/ny=20", "Geometry/Parameters/nz=2"]
+    leaf = run(LEAF, leaf_mesh + REDUCED, "leaf")
+    readme_figure(leaf["strain_energy"] / ENERGY - 1, "3.4e-3", "leaf m = 2, reduced: error of the energy")
+    check(leaf["solver_iterations"] <= 60, "leaf m = 2, reduced: %d p-multigrid iterations (full: 34)"
+          % leaf["solver_iterations"])
+
+    for sets, words in ((["Analysis=nonlinear static"], "for linear static analyses"),
+                        (["Discretization/Element degree=1"], "Element degree 2 to 4"),
+                        (["Discretization/Hourglass stiffness=0"], "Hourglass stiffness")):
+        out = os.path.join(work, "refused")
+        p = subprocess.run(["mpirun", "-np", "2", solver, CANTILEVER, "--check", "--set", "Output/Directory=" + out] +
+                           sum([["--set", s] for s in REDUCED + sets], []), capture_output=True, text=True, env=ENV)
+        text = p.stdout + p.stderr
+        check(p.returncode == 2 and words in text and "Discretization/" in text and not os.path.exists(out),
+              "%s refused with a message naming Discretization/ (exit %s)" % (" ".join(sets), p.returncode))
+finally:
+    shutil.rmtree(work, ignore_errors=True)
+finish()
