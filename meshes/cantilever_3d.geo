@@ -13,11 +13,12 @@ If (L <= 0 || H <= 0 || W <= 0 || ny < 1 || nz < 1 || (nx != 0 && nx < 1))
   Error("cantilever_3d.geo: need L, H, W > 0, ny, nz >= 1 and nx >= 1 (or nx = 0: about square cells)");
   Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
 EndIf
-If (grade_x < 1 || (graded_ends != 0 && graded_ends != 1 && graded_ends != 2) || (grade_x > 1 && hexes != 1))
-  Error("cantilever_3d.geo: need grade_x >= 1 (hexahedra only), graded_ends 0, 1 or 2");
+n_x = (nx > 0) ? nx : Ceil(ny * L / H);
+If (grade_x < 1 || (graded_ends != 0 && graded_ends != 1 && graded_ends != 2) || (grade_x > 1 && hexes != 1) ||
+    (grade_x > 1 && n_x < ((graded_ends == 0) ? 3 : 2)))
+  Error("cantilever_3d.geo: need grade_x >= 1 (hexahedra only), graded_ends 0, 1 or 2, and with grade_x > 1 at least 3 cells along x (2 with one graded end)");
   Abort;
 EndIf
-n_x = (nx > 0) ? nx : Ceil(ny * L / H);
 Include "graded_layers.geo"; // layer_count[], layer_top[] from n_x, grade_x, graded_ends
 Point(1) = {0, -H/2, -W/2}; Point(2) = {0, H/2, -W/2}; Point(3) = {0, H/2, W/2}; Point(4) = {0, -H/2, W/2};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};

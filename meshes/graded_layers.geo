@@ -3,7 +3,10 @@
 // start, 2 the far end). Out: layer_count[] (ones), layer_top[] (cumulative fractions, last 1).
 // cases/benchmarks/peers/calculix_common.py graded() writes the same grid lines for the peers.
 steps = (graded_ends == 0) ? Floor((n_x - 1) / 2) : n_x - 1;
-ratio = (steps > 0) ? grade_x^(1 / steps) : 1;
+ratio = 1; // gmsh evaluates both branches of ?:, so no 1 / steps there
+If (steps > 0)
+  ratio = grade_x^(1 / steps);
+EndIf
 layer_length[] = {}; layer_total = 0;
 For i In {0 : n_x - 1}
   k = (graded_ends == 1) ? i : ((graded_ends == 2) ? n_x - 1 - i : ((i < n_x - 1 - i) ? i : n_x - 1 - i));

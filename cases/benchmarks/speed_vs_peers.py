@@ -13,7 +13,8 @@ after a run longer than that; --targets 0.01,0.003,0.001 adds the wall time at w
 reaches those errors and its ratio to each peer; --name writes <name>_speed.* instead of <problem>_speed.*;
 --integration full,reduced runs ours with each Discretization/Integration; --grade 1,50 runs every ladder (ours and CalculiX's) also on meshes graded along x, the longest cell 50
 times the shortest (meshes/graded_layers.geo; toward the clamp of the cantilever, both ends of the leaf
-and the strip; the hinge's toward its blade roots in x and y, peers/hinge_mesh.py).
+and the strip; the hinge's every x segment toward both its ends and the blocks' y segments toward the
+blade, peers/hinge_mesh.py).
 
   scripts/setup.sh peers        # once: installs calculix-ccx and python3-dolfinx, builds
   /usr/bin/python3 cases/benchmarks/speed_vs_peers.py [--problem cantilever|leaf|hinge|flexure-finite-strain] [--n ...] [--methods auto,cg-amg,direct]
@@ -320,7 +321,7 @@ def choose_reference(args, done):
         finest = (k, variant) + reference_from(rs, finest=True)
         if finest[4] != extrapolations[-1][4]:
             extrapolations.append(finest)
-    first = variant_label(args.method_list[0], max(args.degrees), args.grades[0], args)
+    first = variant_label(args.method_list[0], max(args.degrees), args.grades[0], args, args.integrations[0])
     top = [e for e in extrapolations if e[0] == max(args.degrees) and e[1] == first]
     if args.reference is not None:
         how = "given (--reference)" + (": " + args.reference_note if args.reference_note else "")

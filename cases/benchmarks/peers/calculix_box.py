@@ -9,8 +9,8 @@ reduced integration), E = 1000, nu = 0.3, its default SPOOLES solver with 2 thre
   leaf M:       40 x 10 x 1, 5M x 10M x M cells, clamped at x = 0, x = 40 turned rigidly by 1 degree
                 about the x axis (exact rotation per node); QoI the strain energy (*EL PRINT ELSE).
 GRADE (default 1): the cells along x graded as meshes/graded_layers.geo grades ours, the longest GRADE
-times the shortest, toward the clamp (cantilever) or both ends (leaf); the hinge's toward the blade
-roots (hinge_mesh.py).
+times the shortest, toward the clamp (cantilever) or both ends (leaf); the hinge's every x segment
+toward both its ends and the blocks' y segments toward the blade (hinge_mesh.py).
 Writes the deck into WORK, runs ccx, prints one JSON line. Run: calculix_box.py PROBLEM N WORK [GRADE]"""
 import json
 import math

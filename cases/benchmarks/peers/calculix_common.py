@@ -25,6 +25,8 @@ def graded(lo, hi, cells, grade, ends):
     if grade == 1:
         return uniform(lo, hi, cells)
     steps = (cells - 1) // 2 if ends == 0 else cells - 1
+    if steps < 1:
+        raise ValueError("graded: %d cells cannot grade %s" % (cells, "both ends" if ends == 0 else "one end"))
     ratio = grade ** (1.0 / steps) if steps > 0 else 1.0
     k = [i if ends == 1 else cells - 1 - i if ends == 2 else min(i, cells - 1 - i) for i in range(cells)]
     lengths = [ratio ** j for j in k]

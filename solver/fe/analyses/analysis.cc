@@ -94,7 +94,10 @@ namespace compliant
                         {"model", to_string(p.model)},
                         {"mesh_file", p.mesh_file},
                         {"element_degree", std::to_string(p.element_degree)},
-                        {"cell_type", hypercube_cells ? "hypercube" : "simplex"}};
+                        {"cell_type", hypercube_cells ? "hypercube" : "simplex"},
+                        {"integration", p.reduced_integration ?
+                                          "reduced, hourglass stiffness " + std::to_string(p.hourglass_stiffness) :
+                                          "full"}};
     summary.parameters = p.geometry_parameters;
     return summary;
   }

@@ -238,7 +238,7 @@ namespace compliant
                          "stiffness)");
       if (p.reduced_integration && !(p.hourglass_stiffness > 0))
         throw InputError(where + "Hourglass stiffness: expected a fraction in (0, 1] with Integration = "
-                         "reduced (0 leaves the hourglass modes free), got 0");
+                         "reduced (0 leaves the hourglass modes free), got " + std::to_string(p.hourglass_stiffness));
     }
   } // namespace
 

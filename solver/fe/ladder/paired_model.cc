@@ -117,6 +117,9 @@ namespace compliant
         throw InputError(where + " '" + spec + "': " + e.what());
       }
     auto &q           = paired.parameters;
+    if (q.reduced_integration)
+      throw InputError(where + ": '" + path + "' sets Discretization/Integration = reduced; the model ladder "
+                       "compares fully integrated rungs (its finite-strain rungs have no reduced rule)");
     if (q.analysis != "linear static")
       throw InputError(where + ": '" + path + "' runs Analysis = " + q.analysis +
                        "; expected linear static (the ladder climbs linear static cases)");

@@ -94,7 +94,11 @@ namespace compliant
         std::vector<PETScWrappers::MPI::Vector> rhs(n_components<dim>,
                                                     PETScWrappers::MPI::Vector(owned, problem.communicator));
 
-        const Quadrature<dim> &quadrature = *problem.quadrature;
+        // Integration = reduced: the projection keeps the full rule (its p-point part alone would
+        // leave the mass matrix singular, and the rule's conditioning would follow 1 / e).
+        const Quadrature<dim> quadrature = problem.parameters.reduced_integration ?
+                                             Quadrature<dim>(QGauss<dim>(problem.fe->degree + 1)) :
+                                             *problem.quadrature;
         FEValues<dim> displacement_values(*problem.mapping, *problem.fe, quadrature, update_gradients | update_values);
         FEValues<dim> scalar_values(*problem.mapping, *fe, quadrature, update_values | update_JxW_values);
         const bool    has_pressure = problem.fe->n_components() > dim;
