@@ -97,6 +97,7 @@ namespace compliant
           estimates.warm_started =
             interpolate_to_finer_degree<dim>(*primal, primal->solution, problem, problem.warm_start);
           problem.reused_degree_one_level = primal->degree_one_level;
+          problem.reused_lower_multigrid  = primal->multigrid;
           // A degree-1 model solved by MUMPS: its factor is the degree-2 multigrid's exact coarse solve.
           if (!problem.reused_degree_one_level && primal->factorization && primal->fe->degree == 1 &&
               primal->solver_method == SolverMethod::direct)
@@ -123,9 +124,13 @@ namespace compliant
             reduction << enriched_solve_reduction;
             estimates.how += ", solved from the degree-p solution to a residual reduction of " + reduction.str();
           }
-        if (model.problem->statistics.degree_one_reused)
+        if (model.problem->statistics.lower_multigrid_reused)
+          estimates.how += ", its multigrid the model's own below degree p + 1 (levels, smoothers, degree-1 level)";
+        else if (model.problem->statistics.degree_one_reused)
           estimates.how += primal && primal->fe->degree == 1 ?
-                             ", its multigrid's degree-1 level the model's own matrix and MUMPS factor" :
+                             (primal->solver_method == SolverMethod::direct ?
+                                ", its multigrid's degree-1 level the model's own matrix and MUMPS factor" :
+                                ", its multigrid's degree-1 level the model's own matrix and GAMG") :
                              ", its multigrid's degree-1 level (matrix and AMG) the model's own";
         try
           {

@@ -40,6 +40,7 @@ namespace compliant
     unsigned int              coarse_iterations = 0; // inner CG on degree 1, summed
     double                    initial_residual  = 0; // |f - K u0| of the matrix-free solve, u0 its start
     bool                      degree_one_reused = false; // another model's degree-1 level served
+    bool                      lower_multigrid_reused = false; // another model's V-cycle below degree p
     std::vector<std::size_t>  level_dofs;
     std::string               multigrid_note; // smoother and coarse solve, and why
   };
@@ -124,6 +125,10 @@ namespace compliant
     // kept here; the enriched model of the same mesh, given it before its solve in
     // reused_degree_one_level, uses it instead of building its own.
     std::shared_ptr<fast_solver::DegreeOneLevel> degree_one_level, reused_degree_one_level;
+    // Likewise the matrix-free model's whole solver: the enriched model's multigrid then builds
+    // its degree-(p+1) level only and takes this one's V-cycle as its coarse solve.
+    std::shared_ptr<const fast_solver::PMultigridSolver<dim, fast_solver::ElasticityOperator<dim, double>>>
+      multigrid, reused_lower_multigrid;
     // MUMPS: the factor of the last solve, kept until the next assembly, so that a dual of the
     // same matrix (goal-oriented refinement) is a back-substitution.
     std::shared_ptr<DirectFactorization> factorization;

@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/solver_control.h>
 
+#include "fast_solver/coarse_level_solver.h"
 #include "fast_solver/elasticity_operator.h"
 #include "fast_solver/p_multigrid_solver.h"
 #include "linear_algebra/direct_factorization.h"
@@ -105,10 +106,18 @@ namespace compliant
           settings.max_iterations = std::min(settings.max_iterations, 300u);
         try
           {
+            // With error estimates, a degree-1 model's GAMG is kept: the enriched (degree-2) model's
+            // multigrid takes it as its degree-1 level instead of building its own.
+            const bool keep = parameters.error_estimates && fe->degree == 1;
+            PC         kept = nullptr;
             if (solver_method == SolverMethod::direct)
               statistics.iterations = solve_direct(x);
             else
-              statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, modes, settings, dim);
+              statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, modes, settings, dim,
+                                                          keep ? &kept : nullptr);
+            if (kept)
+              degree_one_level = fast_solver::degree_one_level_from_preconditioner<dim>(
+                dof_handler, kept, fast_solver::PMultigridSettings().coarse_tolerance, communicator);
           }
         catch (const std::runtime_error &e)
           {
@@ -151,6 +160,8 @@ namespace compliant
                                     parameters.solver_max_iterations;
     settings.petsc_options      = parameters.petsc_options;
     settings.reused_degree_one_level = reused_degree_one_level;
+    if (warm_start.size() > 0)
+      settings.eigenvalue_iterations = 8; // a few iterations from a close guess
     const bool plane_stress     = dim == 2 && parameters.model == Model::plane_stress;
     const auto lame = [&](const types::material_id id) {
       const Material &material = materials.at(id);
@@ -175,10 +186,12 @@ namespace compliant
                          const DoFHandler<dim> &dofs, const AffineConstraints<double> &level_constraints) {
         level_operator.reinit(level_mapping, dofs, level_constraints, lame, hourglass);
       },
-      settings, communicator);
+      settings, communicator, reused_lower_multigrid);
     Solver &solver = *built;
     if (keep_solver_for_duals)
       kept_solver = built;
+    if (parameters.error_estimates)
+      multigrid = built;
     statistics.preconditioner_setup_seconds = reused ? 0. : solver.statistics().setup_seconds;
     statistics.level_dofs.assign(solver.statistics().level_dofs.begin(),
                                  solver.statistics().level_dofs.end());
@@ -188,7 +201,8 @@ namespace compliant
       note << "largest cell aspect ratio " << std::setprecision(3) << s.largest_aspect_ratio
            << ": Chebyshev degree " << s.smoothing_degree << " over range " << s.smoothing_range
            << ", degree-1 level by " << (s.coarse_direct ? "MUMPS" : "GAMG")
-           << (s.coarse_reused ? ", the degree-p model's" : "");
+           << (s.lower_reused ? "; levels of degree <= p, their smoothers and the degree-1 level the degree-p model's" :
+               s.coarse_reused ? ", the degree-p model's" : "");
       statistics.multigrid_note = note.str();
     }
     try
@@ -197,6 +211,7 @@ namespace compliant
         statistics.iterations = solver.solve(system_rhs, constraints, x, warm_start.size() > 0 ? &start : nullptr);
         statistics.initial_residual = solver.statistics().initial_residual;
         statistics.degree_one_reused = solver.statistics().coarse_reused;
+        statistics.lower_multigrid_reused = solver.statistics().lower_reused;
         if (parameters.error_estimates)
           degree_one_level = solver.degree_one_level();
         statistics.coarse_iterations = solver.statistics().coarse_iterations;

@@ -63,6 +63,27 @@ namespace compliant::fast_solver
     correction.reinit(owned, communicator);
   }
 
+  CoarseLevelSolver::CoarseLevelSolver(PC pc, const dealii::IndexSet &owned, const double relative_tolerance,
+                                       MPI_Comm communicator)
+  {
+    rhs.reinit(owned, communicator);
+    correction.reinit(owned, communicator);
+    check(KSPCreate(communicator, &ksp), "KSPCreate");
+    // The KSP takes the PC's operators and its own reference; the PC keeps its set-up, since
+    // neither operator changes.
+    check(KSPSetPC(ksp, pc), "KSPSetPC");
+    check(PCDestroy(&pc), "PCDestroy (the caller's reference)");
+    if (relative_tolerance > 0)
+      {
+        check(KSPSetType(ksp, KSPCG), "KSPSetType(cg)");
+        check(KSPSetTolerances(ksp, relative_tolerance, 1e-300, PETSC_DEFAULT, 100), "KSPSetTolerances");
+        check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+      }
+    else
+      check(KSPSetType(ksp, KSPPREONLY), "KSPSetType(preonly)");
+    check(KSPSetUp(ksp), "KSPSetUp (reused GAMG)");
+  }
+
   CoarseLevelSolver::~CoarseLevelSolver()
   {
     if (ksp)
@@ -138,6 +159,19 @@ namespace compliant::fast_solver
   }
 
   template <int dim>
+  std::shared_ptr<DegreeOneLevel> degree_one_level_from_preconditioner(const dealii::DoFHandler<dim> &dofs,
+                                                                       PC pc, const double relative_tolerance,
+                                                                       MPI_Comm communicator)
+  {
+    auto level         = std::make_shared<DegreeOneLevel>();
+    level->owned       = dofs.locally_owned_dofs();
+    level->solver      = std::make_unique<CoarseLevelSolver>(pc, level->owned, relative_tolerance, communicator);
+    level->fingerprint = degree_one_fingerprint(dofs, communicator);
+    level->direct      = false;
+    return level;
+  }
+
+  template <int dim>
   bool degree_one_level_fits(const DegreeOneLevel &level, const dealii::DoFHandler<dim> &dofs,
                              const std::vector<double> &fingerprint, MPI_Comm communicator)
   {
@@ -156,6 +190,10 @@ namespace compliant::fast_solver
     const dealii::DoFHandler<2> &, std::shared_ptr<const DirectFactorization>, MPI_Comm);
   template std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor<3>(
     const dealii::DoFHandler<3> &, std::shared_ptr<const DirectFactorization>, MPI_Comm);
+  template std::shared_ptr<DegreeOneLevel> degree_one_level_from_preconditioner<2>(
+    const dealii::DoFHandler<2> &, PC, double, MPI_Comm);
+  template std::shared_ptr<DegreeOneLevel> degree_one_level_from_preconditioner<3>(
+    const dealii::DoFHandler<3> &, PC, double, MPI_Comm);
   template bool degree_one_level_fits<2>(const DegreeOneLevel &, const dealii::DoFHandler<2> &,
                                          const std::vector<double> &, MPI_Comm);
   template bool degree_one_level_fits<3>(const DegreeOneLevel &, const dealii::DoFHandler<3> &,

@@ -37,6 +37,10 @@ namespace compliant::fast_solver
     // alive here; owned: its rows on this rank.
     CoarseLevelSolver(std::shared_ptr<const DirectFactorization> factor, const dealii::IndexSet &owned,
                       MPI_Comm communicator);
+    // A preconditioner already set up on the same degree-1 system (a degree-1 model solved by CG +
+    // GAMG): this object takes over the caller's reference. relative_tolerance as above.
+    CoarseLevelSolver(PC set_up_preconditioner, const dealii::IndexSet &owned, double relative_tolerance,
+                      MPI_Comm communicator);
     ~CoarseLevelSolver() override;
     CoarseLevelSolver(const CoarseLevelSolver &)            = delete;
     CoarseLevelSolver &operator=(const CoarseLevelSolver &) = delete;
@@ -77,6 +81,14 @@ namespace compliant::fast_solver
   std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor(const dealii::DoFHandler<dim>             &dofs,
                                                                std::shared_ptr<const DirectFactorization> factor,
                                                                MPI_Comm communicator);
+
+  // The degree-1 level of a degree-1 model solved by CG + GAMG: its set-up GAMG (the reference is
+  // taken over) serves the degree-2 model on the same mesh, by CG to relative_tolerance.
+  template <int dim>
+  std::shared_ptr<DegreeOneLevel> degree_one_level_from_preconditioner(const dealii::DoFHandler<dim> &dofs,
+                                                                       PC set_up_preconditioner,
+                                                                       double relative_tolerance,
+                                                                       MPI_Comm communicator);
 
   // Whether `level` (kept from another solver) serves these degree-1 DoFs: the same numbering
   // and, on every rank, the same owned DoFs.

@@ -17,6 +17,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/petsc_vector.h>
 
 #include <deal.II/lac/petsc_sparse_matrix.h>
@@ -50,6 +51,10 @@ namespace compliant::fast_solver
     // AMG: 0 = one V-cycle; > 0 = CG + AMG to this residual reduction, and the outer CG becomes
     // flexible (the preconditioner then varies from one application to the next).
     double       coarse_tolerance   = 0.03;
+    // CG iterations that estimate each level's largest eigenvalue for Chebyshev. A warm-started
+    // solve (a few iterations) takes 8: on the error estimates' enriched models 15 and 8 gave the
+    // same iterations and estimates, 8 saved 0.02 s of 0.24 s (3D Q3, 137k DoFs).
+    unsigned int eigenvalue_iterations = 15;
     std::string  petsc_options;           // passed to the coarse GAMG
     // Another solver's degree-1 level on the same mesh: used instead of building one when its
     // DoFs' fingerprint matches this mesh's (else built as usual, and statistics say so).
@@ -77,6 +82,7 @@ namespace compliant::fast_solver
     double                               smoothing_range  = 0;
     bool                                 coarse_direct    = false;
     bool                                 coarse_reused    = false; // settings' degree-1 level used
+    bool                                 lower_reused     = false; // a degree-p solver's V-cycle below
     std::vector<dealii::types::global_dof_index> level_dofs; // coarse to fine
   };
 
@@ -95,11 +101,18 @@ namespace compliant::fast_solver
       std::function<void(Operator &, const dealii::Mapping<dim> &, const dealii::DoFHandler<dim> &,
                          const dealii::AffineConstraints<double> &)>;
 
+    using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
+
     // Builds every level and the preconditioner; the mapping and fine DoFHandler must outlive
-    // the solver.
+    // the solver. lower: a solver one degree lower on the same mesh, numbered alike (the error
+    // estimates' degree-p model for its degree-(p+1) twin). Its whole V-cycle then is this
+    // solver's coarse solve, and only the finest level is built here: the levels below, their
+    // transfers, smoothers and degree-1 solver are the lower solver's. It must outlive this
+    // one and is not changed. A lower solver that does not fit (statistics say so) is ignored.
     PMultigridSolver(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &fine_dofs,
                      const LevelConstraints &level_constraints, const LevelSetup &level_setup,
-                     const PMultigridSettings &settings, MPI_Comm communicator);
+                     const PMultigridSettings &settings, MPI_Comm communicator,
+                     std::shared_ptr<const PMultigridSolver> lower = nullptr);
     ~PMultigridSolver();
 
     // Changes every level's operator (a new Newton state) and rebuilds what depends on it:
@@ -122,6 +135,9 @@ namespace compliant::fast_solver
                        dealii::PETScWrappers::MPI::Vector         &solution,
                        const WarmStart                           *start = nullptr);
 
+    // One V-cycle on vectors of the finest level (dst = P^-1 src).
+    void precondition(VectorType &dst, const VectorType &src) const;
+
     const PMultigridStatistics &statistics() const { return stats; }
     // The degree-1 level (matrix, solver, fingerprint), to hand to another solver of this mesh.
     std::shared_ptr<DegreeOneLevel> degree_one_level() const;
@@ -129,6 +145,11 @@ namespace compliant::fast_solver
   private:
     // fingerprint: the degree-1 DoFs' (empty in update(): the mesh has not changed).
     void build_smoother_and_coarse_solver(const std::vector<double> &fingerprint);
+    // Levels 0 (the lower solver's finest) and 1 (fine_dofs); false if lower does not fit.
+    bool build_on_lower(const dealii::DoFHandler<dim> &fine_dofs, const LevelConstraints &level_constraints,
+                        const LevelSetup &level_setup, std::shared_ptr<const PMultigridSolver> lower);
+    // The V-cycle's objects over the current levels, smoother and coarse solve.
+    void build_preconditioner();
 
     struct Levels;
     std::unique_ptr<Levels> levels;

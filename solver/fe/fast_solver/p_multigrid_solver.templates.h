@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "fast_solver/coarse_level_solver.h"
 #include "mesh/cell_aspect_ratio.h"
@@ -38,18 +39,71 @@ namespace compliant::fast_solver
     using SmootherType   = PreconditionChebyshev<Operator, VectorType, DiagonalMatrix<VectorType>>;
     using TransferType   = MGTransferGlobalCoarsening<dim, VectorType>;
 
-    // Level l holds degree l + 1; the finest is the problem's own DoFHandler.
+    // A lower solver's V-cycle as the coarse solve of the level above it.
+    struct LowerCycle : public MGCoarseGridBase<VectorType>
+    {
+      std::shared_ptr<const PMultigridSolver> lower;
+      void operator()(const unsigned int, VectorType &dst, const VectorType &src) const override
+      {
+        lower->precondition(dst, src);
+      }
+    };
+
+    // Level l holds degree l + 1; the finest is the problem's own DoFHandler. On a lower solver:
+    // two levels, level 0 its finest (degree p), level 1 this solver's (degree p + 1).
     std::vector<std::unique_ptr<FESystem<dim>>>    coarse_elements;
     std::vector<std::unique_ptr<DoFHandler<dim>>>  coarse_dofs;
     MGLevelObject<const DoFHandler<dim> *>         dofs;
     MGLevelObject<AffineConstraints<double>>       constraints;
-    MGLevelObject<std::unique_ptr<Operator>>       operators;
+    MGLevelObject<std::shared_ptr<Operator>>       operators;
     MGLevelObject<MGTwoLevelTransfer<dim, VectorType>> two_level_transfers;
     std::unique_ptr<TransferType>                  transfer;
     std::shared_ptr<DegreeOneLevel>                coarse;
+    LowerCycle                                     lower_cycle; // its `lower` set: the coarse solve
     const Mapping<dim>                            *mapping = nullptr;
     MGSmootherPrecondition<Operator, SmootherType, VectorType> smoother;
+    std::unique_ptr<mg::Matrix<VectorType>>        mg_matrix;
+    std::unique_ptr<Multigrid<VectorType>>         multigrid;
+    std::unique_ptr<PreconditionMG<dim, VectorType, TransferType>> preconditioner;
+
+    const MGCoarseGridBase<VectorType> &coarse_solve() const
+    {
+      if (lower_cycle.lower)
+        return lower_cycle;
+      return *coarse->solver;
+    }
+    // Inner iterations of the degree-1 solver, this solver's or the lower one's.
+    unsigned int coarse_inner_iterations() const
+    {
+      return lower_cycle.lower ? lower_cycle.lower->levels->coarse_inner_iterations() :
+                                 coarse->solver->inner_iterations();
+    }
   };
+
+  namespace
+  {
+    // Sums over the locally owned cells of (index + 1) (i + 1) times each coordinate of the cell's
+    // centre, for the cell's i-th DoF, and the DoF count: equal on two DoFHandlers of one element
+    // on twin meshes exactly when they number the DoFs alike (up to a coincidence of sums).
+    template <int dim>
+    std::vector<double> cell_dof_fingerprint(const DoFHandler<dim> &dofs, MPI_Comm communicator)
+    {
+      std::vector<double>                  sums(dim, 0.);
+      std::vector<types::global_dof_index> indices(dofs.get_fe().n_dofs_per_cell());
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(indices);
+            const Point<dim> centre = cell->center();
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              for (unsigned int d = 0; d < dim; ++d)
+                sums[d] += (indices[i] + 1.) * (i + 1.) * centre[d];
+          }
+      Utilities::MPI::sum(sums, communicator, sums);
+      sums.push_back(dofs.n_dofs());
+      return sums;
+    }
+  } // namespace
 
 
   template <int dim, typename Operator>
@@ -58,12 +112,20 @@ namespace compliant::fast_solver
                                                     const LevelConstraints   &level_constraints,
                                                     const LevelSetup         &level_setup,
                                                     const PMultigridSettings &settings_in,
-                                                    MPI_Comm                  communicator_in)
+                                                    MPI_Comm                  communicator_in,
+                                                    std::shared_ptr<const PMultigridSolver> lower)
     : levels(std::make_unique<Levels>())
     , settings(settings_in)
     , communicator(communicator_in)
   {
-    Timer              timer;
+    Timer timer;
+    levels->mapping = &mapping;
+    if (lower && build_on_lower(fine_dofs, level_constraints, level_setup, lower))
+      {
+        build_smoother_and_coarse_solver({});
+        stats.setup_seconds = timer.wall_time();
+        return;
+      }
     const unsigned int fine_degree = fine_dofs.get_fe().degree;
     const unsigned int top         = fine_degree - 1;
     auto              &L           = *levels;
@@ -89,7 +151,7 @@ namespace compliant::fast_solver
         L.constraints[level].reinit(relevant);
         level_constraints(*L.dofs[level], L.constraints[level]);
         L.constraints[level].close();
-        L.operators[level] = std::make_unique<typename Levels::Operator>();
+        L.operators[level] = std::make_shared<typename Levels::Operator>();
         level_setup(*L.operators[level], mapping, *L.dofs[level], L.constraints[level]);
         stats.level_dofs.push_back(L.dofs[level]->n_dofs());
       }
@@ -128,6 +190,59 @@ namespace compliant::fast_solver
 
 
   template <int dim, typename Operator>
+  bool PMultigridSolver<dim, Operator>::build_on_lower(const DoFHandler<dim>                  &fine_dofs,
+                                                       const LevelConstraints                 &level_constraints,
+                                                       const LevelSetup                       &level_setup,
+                                                       std::shared_ptr<const PMultigridSolver> lower)
+  {
+    auto       &L           = *levels;
+    const auto &lower_L     = *lower->levels;
+    const auto &lower_dofs  = *lower_L.dofs[lower_L.dofs.max_level()];
+    // Twin meshes: a DoFHandler of the lower degree on this mesh must number as the lower one's.
+    DoFHandler<dim> twin(fine_dofs.get_triangulation());
+    twin.distribute_dofs(lower_dofs.get_fe());
+    const bool owned_alike = twin.locally_owned_dofs() == lower_dofs.locally_owned_dofs();
+    if (lower_dofs.get_fe().degree + 1 != fine_dofs.get_fe().degree ||
+        Utilities::MPI::min(owned_alike ? 1 : 0, communicator) == 0 ||
+        cell_dof_fingerprint(twin, communicator) != cell_dof_fingerprint(lower_dofs, communicator))
+      return false;
+
+    L.dofs.resize(0, 1);
+    L.constraints.resize(0, 1);
+    L.operators.resize(0, 1);
+    L.two_level_transfers.resize(0, 1);
+    L.dofs[0] = &lower_dofs;
+    L.dofs[1] = &fine_dofs;
+    L.constraints[0].copy_from(lower_L.constraints[lower_L.constraints.max_level()]);
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(fine_dofs, relevant);
+    L.constraints[1].reinit(relevant);
+    level_constraints(fine_dofs, L.constraints[1]);
+    L.constraints[1].close();
+    L.operators[0] = lower_L.operators[lower_L.operators.max_level()];
+    L.operators[1] = std::make_shared<typename Levels::Operator>();
+    level_setup(*L.operators[1], *L.mapping, fine_dofs, L.constraints[1]);
+    // The transfer maps cells by their ids: it works across the twin triangulations.
+    L.two_level_transfers[1].reinit_polynomial_transfer(fine_dofs, lower_dofs, L.constraints[1], L.constraints[0]);
+    L.transfer = std::make_unique<typename Levels::TransferType>(
+      L.two_level_transfers, [&L](const unsigned int level, typename Levels::VectorType &vector) {
+        L.operators[level]->initialize_dof_vector(vector);
+      });
+    L.lower_cycle.lower = std::move(lower);
+
+    const auto &below          = L.lower_cycle.lower->stats;
+    stats.largest_aspect_ratio = below.largest_aspect_ratio;
+    stats.smoothing_range      = below.smoothing_range;
+    stats.smoothing_degree     = below.smoothing_degree;
+    stats.coarse_direct        = below.coarse_direct;
+    stats.coarse_reused        = true;
+    stats.lower_reused         = true;
+    stats.level_dofs           = below.level_dofs;
+    stats.level_dofs.push_back(fine_dofs.n_dofs());
+    return true;
+  }
+
+  template <int dim, typename Operator>
   std::shared_ptr<DegreeOneLevel> PMultigridSolver<dim, Operator>::degree_one_level() const
   {
     return levels->coarse;
@@ -143,16 +258,21 @@ namespace compliant::fast_solver
       {
         auto &data          = smoother_data[level];
         data.preconditioner = std::make_shared<DiagonalMatrix<typename Levels::VectorType>>();
-        L.operators[level]->compute_inverse_diagonal(data.preconditioner->get_vector());
+        // Level 0 is solved by the coarse solve, never smoothed: its diagonal only gives the size.
+        if (level == 0)
+          L.operators[level]->initialize_dof_vector(data.preconditioner->get_vector());
+        else
+          L.operators[level]->compute_inverse_diagonal(data.preconditioner->get_vector());
         data.degree              = stats.smoothing_degree;
         data.smoothing_range     = stats.smoothing_range;
-        data.eig_cg_n_iterations = 15;
-        data.constraints.copy_from(L.constraints[level]);
+        data.eig_cg_n_iterations = settings.eigenvalue_iterations;
+        if (level > 0)
+          data.constraints.copy_from(L.constraints[level]);
       }
     L.smoother.initialize(L.operators, smoother_data);
 
     if (stats.coarse_reused)
-      return;
+      return build_preconditioner();
     // A new level every time: a solver that reused this one keeps the old.
     auto coarse = std::make_shared<DegreeOneLevel>();
     L.operators[0]->compute_matrix(coarse->matrix, communicator);
@@ -163,6 +283,27 @@ namespace compliant::fast_solver
     coarse->owned       = L.dofs[0]->locally_owned_dofs();
     coarse->direct      = stats.coarse_direct;
     L.coarse            = std::move(coarse);
+    build_preconditioner();
+  }
+
+  template <int dim, typename Operator>
+  void PMultigridSolver<dim, Operator>::build_preconditioner()
+  {
+    auto              &L   = *levels;
+    const unsigned int top = L.operators.max_level();
+    L.preconditioner.reset();
+    L.multigrid.reset();
+    L.mg_matrix  = std::make_unique<mg::Matrix<VectorType>>(L.operators);
+    L.multigrid  = std::make_unique<Multigrid<VectorType>>(*L.mg_matrix, L.coarse_solve(), *L.transfer, L.smoother,
+                                                          L.smoother, 0, top);
+    L.preconditioner = std::make_unique<PreconditionMG<dim, VectorType, typename Levels::TransferType>>(
+      *L.dofs[top], *L.multigrid, *L.transfer);
+  }
+
+  template <int dim, typename Operator>
+  void PMultigridSolver<dim, Operator>::precondition(VectorType &dst, const VectorType &src) const
+  {
+    levels->preconditioner->vmult(dst, src);
   }
 
   template <int dim, typename Operator>
@@ -170,6 +311,8 @@ namespace compliant::fast_solver
   {
     Timer timer;
     auto &L = *levels;
+    if (L.lower_cycle.lower)
+      throw std::logic_error("PMultigridSolver::update: the levels below are another solver's");
     for (unsigned int level = L.operators.min_level(); level <= L.operators.max_level(); ++level)
       change(*L.operators[level]);
     if (stats.coarse_reused) // the operators changed: the reused level no longer fits
@@ -224,13 +367,8 @@ namespace compliant::fast_solver
     constraints.set_zero(rhs);
     stats.lifted_rhs_norm = rhs.l2_norm();
 
-    const unsigned int     coarse_iterations_before = L.coarse->solver->inner_iterations();
-    mg::Matrix<VectorType> mg_matrix(L.operators);
-    Multigrid<VectorType>  multigrid(mg_matrix, *L.coarse->solver, *L.transfer, L.smoother,
-                                     L.smoother, 0, top);
-    PreconditionMG<dim, VectorType, typename Levels::TransferType> preconditioner(*L.dofs[top],
-                                                                                 multigrid,
-                                                                                 *L.transfer);
+    const unsigned int coarse_iterations_before = L.coarse_inner_iterations();
+    const auto        &preconditioner           = *L.preconditioner;
     double tolerance = settings.relative_tolerance * rhs.l2_norm();
     if (start)
       {
@@ -252,7 +390,7 @@ namespace compliant::fast_solver
       SolverFlexibleCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);
     else
       SolverCG<VectorType>(control).solve(fine, correction, rhs, preconditioner);
-    stats.coarse_iterations = L.coarse->solver->inner_iterations() - coarse_iterations_before;
+    stats.coarse_iterations = L.coarse_inner_iterations() - coarse_iterations_before;
 
     PetscScalar *values;
     VecGetArray(solution, &values);

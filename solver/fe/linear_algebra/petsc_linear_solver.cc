@@ -66,7 +66,8 @@ namespace compliant
                                    const dealii::PETScWrappers::MPI::Vector        &rhs,
                                    std::vector<dealii::PETScWrappers::MPI::Vector>  near_null_space,
                                    const LinearSolverSettings                      &settings,
-                                   const unsigned int                               block_size)
+                                   const unsigned int                               block_size,
+                                   PC                                              *kept_preconditioner)
   {
     Mat      A = matrix;
     MPI_Comm comm = matrix.get_mpi_communicator();
@@ -99,6 +100,11 @@ namespace compliant
     PetscInt           iterations;
     KSPGetConvergedReason(ksp, &reason);
     KSPGetIterationNumber(ksp, &iterations);
+    if (kept_preconditioner && reason >= 0)
+      {
+        check(PetscObjectReference(reinterpret_cast<PetscObject>(pc)), "PetscObjectReference");
+        *kept_preconditioner = pc;
+      }
     KSPDestroy(&ksp);
     if (reason < 0)
       throw std::runtime_error("linear solver (" + to_string(settings.method) + ") did not converge: PETSc "

@@ -25,12 +25,15 @@ namespace compliant
   // Returns the iteration count; throws std::runtime_error with PETSc's reason on failure.
   // block_size: DoFs per node when a node's components are numbered together (dim for
   // FESystem(FE_Q, dim)); GAMG then aggregates nodes instead of single DoFs.
+  // kept_preconditioner: if given, receives the set-up preconditioner (a reference the caller
+  // owns and destroys with PCDestroy), to serve another solve of the same matrix.
   unsigned int solve_linear_system(dealii::PETScWrappers::MPI::SparseMatrix              &matrix,
                                    dealii::PETScWrappers::MPI::Vector                    &solution,
                                    const dealii::PETScWrappers::MPI::Vector              &rhs,
                                    std::vector<dealii::PETScWrappers::MPI::Vector>       near_null_space,
                                    const LinearSolverSettings                            &settings,
-                                   unsigned int                                          block_size = 1);
+                                   unsigned int                                          block_size = 1,
+                                   PC                                                   *kept_preconditioner = nullptr);
 
   // Makes pc a PETSc GAMG preconditioner for the matrix (already the PC's operator) with the given
   // near null space (made orthonormal here) and block size; extra options (e.g.
