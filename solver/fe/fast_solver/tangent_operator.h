@@ -15,6 +15,7 @@
 
 #include "fast_solver/matrix_free_operator_base.h"
 
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -40,9 +41,12 @@ namespace compliant::fast_solver
     using Vectorized = dealii::VectorizedArray<Number>;
 
     // constraints must be homogeneous (hanging nodes, supports held at zero). The state starts
-    // undeformed and stress-free until set_state.
+    // undeformed and stress-free until set_state. hourglass_stiffness >= 0 on a level of degree
+    // >= 2: the tangent integrated with p Gauss points per direction plus that fraction of the
+    // fully integrated one, as the assembled residual and tangent with
+    // discretization/reduced_integration.h's rule; negative or degree 1: p + 1 points.
     void reinit(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler,
-                const dealii::AffineConstraints<Number> &constraints);
+                const dealii::AffineConstraints<Number> &constraints, double hourglass_stiffness = -1);
 
     // Caches F, S, dS/dE at this operator's Gauss points from the displacement u (ghosted),
     // which lives on state_dofs: the same mesh, any degree. Throws std::runtime_error where the
@@ -65,7 +69,11 @@ namespace compliant::fast_solver
     void add_unconstrained_diagonal(VectorType &diagonal) const override;
     void add_kernel_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix) const override;
 
-    unsigned int                      n_q_points = 1;
-    dealii::AlignedVector<PointState> state; // batch * n_q_points + q
+    // The state at rule r's points (0: p + 1 per direction, 1: p with reduced integration):
+    // batch * n_q_points[r] + q.
+    std::array<unsigned int, 2>                      n_q_points{{1, 0}};
+    std::array<dealii::AlignedVector<PointState>, 2> state;
+    bool                                             reduced   = false;
+    double                                           hourglass = 0; // the full rule's share when reduced
   };
 } // namespace compliant::fast_solver

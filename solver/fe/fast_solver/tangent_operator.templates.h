@@ -20,15 +20,21 @@ namespace compliant::fast_solver
 
   namespace tangent_detail
   {
-    template <int dim, int degree, typename Number>
+    // One Gauss rule (n_q points per direction, MatrixFree rule `quad`) with its share `scale`:
+    // the full rule alone (scale 1), or with reduced integration the reduced rule (1 - e) and the
+    // full one (e).
+    template <int dim, int degree, int n_q, typename Number>
     struct Kernel
     {
-      using Evaluation = FEEvaluation<dim, degree, degree + 1, dim, Number>;
+      using Evaluation = FEEvaluation<dim, degree, n_q, dim, Number>;
       using VectorType = LinearAlgebra::distributed::Vector<Number>;
       using State      = typename TangentOperator<dim, Number>::PointState;
 
+      unsigned int quad  = 0;
+      Number       scale = 1;
+
       // dP = Grad du S + F (dS/dE : sym(F^T Grad du)) at every Gauss point of the batch.
-      static void at_quadrature_points(Evaluation &phi, const State *point)
+      void at_quadrature_points(Evaluation &phi, const State *point) const
       {
         phi.evaluate(EvaluationFlags::gradients);
         for (unsigned int q = 0; q < phi.n_q_points; ++q)
@@ -37,18 +43,18 @@ namespace compliant::fast_solver
             const auto  H  = phi.get_gradient(q);
             const auto  dE = symmetrize(transpose(s.F) * H);
             const auto  dS = s.dS_dE * dE;
-            phi.submit_gradient(H * Tensor<2, dim, VectorizedArray<Number>>(s.S) +
-                                  s.F * Tensor<2, dim, VectorizedArray<Number>>(dS),
+            phi.submit_gradient(scale * (H * Tensor<2, dim, VectorizedArray<Number>>(s.S) +
+                                         s.F * Tensor<2, dim, VectorizedArray<Number>>(dS)),
                                 q);
           }
         phi.integrate(EvaluationFlags::gradients);
       }
 
-      static void apply(const MatrixFree<dim, Number> &data, VectorType &dst, const VectorType &src,
-                        const std::pair<unsigned int, unsigned int> &range,
-                        const AlignedVector<State> &state, const bool plain)
+      void apply(const MatrixFree<dim, Number> &data, VectorType &dst, const VectorType &src,
+                 const std::pair<unsigned int, unsigned int> &range, const AlignedVector<State> &state,
+                 const bool plain) const
       {
-        Evaluation phi(data);
+        Evaluation phi(data, 0, quad);
         for (unsigned int cell = range.first; cell < range.second; ++cell)
           {
             phi.reinit(cell);
@@ -61,34 +67,44 @@ namespace compliant::fast_solver
           }
       }
 
-      static void diagonal(const MatrixFree<dim, Number> &data, VectorType &diagonal,
-                           const AlignedVector<State> &state)
+      void diagonal(const MatrixFree<dim, Number> &data, VectorType &diagonal, const AlignedVector<State> &state) const
       {
-        MatrixFreeTools::compute_diagonal<dim, degree, degree + 1, dim, Number, VectorizedArray<Number>>(
-          data, diagonal, [&](Evaluation &phi) {
-            at_quadrature_points(phi, &state[phi.get_current_cell_index() * phi.n_q_points]);
-          });
+        MatrixFreeTools::compute_diagonal<dim, degree, n_q, dim, Number, VectorizedArray<Number>>(
+          data, diagonal,
+          [&](Evaluation &phi) { at_quadrature_points(phi, &state[phi.get_current_cell_index() * phi.n_q_points]); },
+          0, quad);
       }
 
-      static void matrix(const MatrixFree<dim, Number> &data, const AffineConstraints<Number> &constraints,
-                         PETScWrappers::MPI::SparseMatrix &matrix, const AlignedVector<State> &state)
+      void matrix(const MatrixFree<dim, Number> &data, const AffineConstraints<Number> &constraints,
+                  PETScWrappers::MPI::SparseMatrix &matrix, const AlignedVector<State> &state) const
       {
-        MatrixFreeTools::compute_matrix<dim, degree, degree + 1, dim, Number, VectorizedArray<Number>>(
-          data, constraints, matrix, [&](Evaluation &phi) {
-            at_quadrature_points(phi, &state[phi.get_current_cell_index() * phi.n_q_points]);
-          });
+        MatrixFreeTools::compute_matrix<dim, degree, n_q, dim, Number, VectorizedArray<Number>>(
+          data, constraints, matrix,
+          [&](Evaluation &phi) { at_quadrature_points(phi, &state[phi.get_current_cell_index() * phi.n_q_points]); },
+          0, quad);
       }
     };
 
+    // Runs visitor(kernel) for each rule of the run-time degree (1-4), each with its share.
     template <int dim, typename Number, typename Visitor>
-    void dispatch(const unsigned int degree, const Visitor &visitor)
+    void for_each_rule(const unsigned int degree, const bool reduced, const double hourglass, const Visitor &visitor)
     {
+      const auto run = [&](auto full, auto reduced_rule) {
+        full.scale = reduced ? hourglass : 1;
+        visitor(full);
+        if (reduced)
+          {
+            reduced_rule.quad  = 1;
+            reduced_rule.scale = 1 - hourglass;
+            visitor(reduced_rule);
+          }
+      };
       switch (degree)
         {
-          case 1: visitor(Kernel<dim, 1, Number>()); break;
-          case 2: visitor(Kernel<dim, 2, Number>()); break;
-          case 3: visitor(Kernel<dim, 3, Number>()); break;
-          case 4: visitor(Kernel<dim, 4, Number>()); break;
+          case 1: run(Kernel<dim, 1, 2, Number>(), Kernel<dim, 1, 1, Number>()); break;
+          case 2: run(Kernel<dim, 2, 3, Number>(), Kernel<dim, 2, 2, Number>()); break;
+          case 3: run(Kernel<dim, 3, 4, Number>(), Kernel<dim, 3, 3, Number>()); break;
+          case 4: run(Kernel<dim, 4, 5, Number>(), Kernel<dim, 4, 4, Number>()); break;
           default:
             throw std::invalid_argument("matrix-free tangent: element degree " +
                                         std::to_string(degree) + " is not compiled (1-4)");
@@ -99,17 +115,23 @@ namespace compliant::fast_solver
   template <int dim, typename Number>
   void TangentOperator<dim, Number>::reinit(const Mapping<dim>              &mapping_in,
                                             const DoFHandler<dim>           &dof_handler,
-                                            const AffineConstraints<Number> &constraints_in)
+                                            const AffineConstraints<Number> &constraints_in,
+                                            const double                     hourglass_stiffness)
   {
-    this->reinit_matrix_free(mapping_in, dof_handler, constraints_in);
-    n_q_points = Utilities::pow(this->fe_degree + 1, dim);
+    reduced   = hourglass_stiffness >= 0 && dof_handler.get_fe().degree >= 2;
+    hourglass = reduced ? hourglass_stiffness : 0;
+    this->reinit_matrix_free(mapping_in, dof_handler, constraints_in, reduced);
+    n_q_points = {{Utilities::pow(this->fe_degree + 1, dim), reduced ? Utilities::pow(this->fe_degree, dim) : 0u}};
     // Undeformed and stress-free: F = I, S = 0 (the tangent then has no stiffness until set_state).
     PointState undeformed;
     for (unsigned int d = 0; d < dim; ++d)
       undeformed.F[d][d] = 1;
-    state.resize_fast(this->data->n_cell_batches() * n_q_points);
-    for (auto &point : state)
-      point = undeformed;
+    for (unsigned int r = 0; r < 2; ++r)
+      {
+        state[r].resize_fast(this->data->n_cell_batches() * n_q_points[r]);
+        for (auto &point : state[r])
+          point = undeformed;
+      }
   }
 
   template <int dim, typename Number>
@@ -117,42 +139,46 @@ namespace compliant::fast_solver
                                                const PETScWrappers::MPI::Vector &u,
                                                const PointResponse<dim>         &response)
   {
-    // FEValues on the state's element at this level's Gauss points: the points come in the
-    // same (lexicographic tensor-product) order as in FEEvaluation.
-    const QGauss<dim>                quadrature(this->fe_degree + 1);
-    FEValues<dim>                    values(*this->mapping, state_dofs.get_fe(), quadrature, update_gradients);
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<Tensor<2, dim>>      grad_u(n_q_points);
-    SymmetricTensor<2, dim>          S;
-    SymmetricTensor<4, dim>          dS_dE;
-    bool                             finite = true;
-    for (unsigned int batch = 0; batch < this->data->n_cell_batches(); ++batch)
-      for (unsigned int lane = 0; lane < this->data->n_active_entries_per_cell_batch(batch); ++lane)
-        {
-          const auto level_cell = this->data->get_cell_iterator(batch, lane);
-          const typename DoFHandler<dim>::active_cell_iterator cell(&state_dofs.get_triangulation(),
-                                                                    level_cell->level(),
-                                                                    level_cell->index(), &state_dofs);
-          values.reinit(cell);
-          values[displacement].get_function_gradients(u, grad_u);
-          for (unsigned int q = 0; q < n_q_points; ++q)
+    bool finite = true;
+    for (unsigned int r = 0; r < (reduced ? 2u : 1u); ++r)
+      {
+        // FEValues on the state's element at this level's Gauss points: the points come in the
+        // same (lexicographic tensor-product) order as in FEEvaluation.
+        const QGauss<dim>                quadrature(this->fe_degree + 1 - r);
+        FEValues<dim>                    values(*this->mapping, state_dofs.get_fe(), quadrature, update_gradients);
+        const FEValuesExtractors::Vector displacement(0);
+        const unsigned int               n_q = n_q_points[r];
+        std::vector<Tensor<2, dim>>      grad_u(n_q);
+        SymmetricTensor<2, dim>          S;
+        SymmetricTensor<4, dim>          dS_dE;
+        for (unsigned int batch = 0; batch < this->data->n_cell_batches(); ++batch)
+          for (unsigned int lane = 0; lane < this->data->n_active_entries_per_cell_batch(batch); ++lane)
             {
-              response(cell->material_id(), grad_u[q], S, dS_dE);
-              finite = finite && std::isfinite(S.norm()) && std::isfinite(dS_dE.norm());
-              auto &point = state[batch * n_q_points + q];
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < dim; ++j)
-                  {
-                    point.F[i][j][lane] = (i == j ? 1.0 : 0.0) + grad_u[q][i][j];
-                    if (j >= i)
-                      point.S[i][j][lane] = S[i][j];
-                    for (unsigned int k = 0; k < dim; ++k)
-                      for (unsigned int l = k; l < dim; ++l)
+              const auto level_cell = this->data->get_cell_iterator(batch, lane);
+              const typename DoFHandler<dim>::active_cell_iterator cell(&state_dofs.get_triangulation(),
+                                                                        level_cell->level(),
+                                                                        level_cell->index(), &state_dofs);
+              values.reinit(cell);
+              values[displacement].get_function_gradients(u, grad_u);
+              for (unsigned int q = 0; q < n_q; ++q)
+                {
+                  response(cell->material_id(), grad_u[q], S, dS_dE);
+                  finite      = finite && std::isfinite(S.norm()) && std::isfinite(dS_dE.norm());
+                  auto &point = state[r][batch * n_q + q];
+                  for (unsigned int i = 0; i < dim; ++i)
+                    for (unsigned int j = 0; j < dim; ++j)
+                      {
+                        point.F[i][j][lane] = (i == j ? 1.0 : 0.0) + grad_u[q][i][j];
                         if (j >= i)
-                          point.dS_dE[i][j][k][l][lane] = dS_dE[i][j][k][l];
-                  }
+                          point.S[i][j][lane] = S[i][j];
+                        for (unsigned int k = 0; k < dim; ++k)
+                          for (unsigned int l = k; l < dim; ++l)
+                            if (j >= i)
+                              point.dS_dE[i][j][k][l][lane] = dS_dE[i][j][k][l];
+                      }
+                }
             }
-        }
+      }
     if (Utilities::MPI::logical_or(!finite, this->data->get_dof_handler().get_communicator()))
       throw std::runtime_error("matrix-free tangent: the law gives no finite stress at a Gauss "
                                "point of the degree-" + std::to_string(this->fe_degree) + " level");
@@ -162,20 +188,21 @@ namespace compliant::fast_solver
   void TangentOperator<dim, Number>::apply_cells(VectorType &dst, const VectorType &src,
                                                  const bool plain) const
   {
-    tangent_detail::dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
-      using K = decltype(kernel);
-      this->data->template cell_loop<VectorType, VectorType>(
-        [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
-            const std::pair<unsigned int, unsigned int> &range) { K::apply(mf, d, s, range, state, plain); },
-        dst, src, true);
-    });
+    this->data->template cell_loop<VectorType, VectorType>(
+      [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
+          const std::pair<unsigned int, unsigned int> &range) {
+        tangent_detail::for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+          kernel.apply(mf, d, s, range, state[kernel.quad], plain);
+        });
+      },
+      dst, src, true);
   }
 
   template <int dim, typename Number>
   void TangentOperator<dim, Number>::add_kernel_diagonal(VectorType &diagonal) const
   {
-    tangent_detail::dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
-      decltype(kernel)::diagonal(*this->data, diagonal, state);
+    tangent_detail::for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+      kernel.diagonal(*this->data, diagonal, state[kernel.quad]);
     });
   }
 
@@ -186,57 +213,64 @@ namespace compliant::fast_solver
     // sym(F^T Grad phi) = sym(f (x) g) with f the row c of F, and the geometric part is g.S.g.
     const DoFHandler<dim> &dof_handler = this->data->get_dof_handler();
     const auto            &fe          = dof_handler.get_fe();
-    FEValues<dim>          fe_values(*this->mapping, fe, QGauss<dim>(this->fe_degree + 1), update_gradients | update_JxW_values);
-    const unsigned int     n = fe.n_dofs_per_cell();
+    const unsigned int     n           = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<Tensor<2, dim>>          F(n_q_points);
-    std::vector<SymmetricTensor<2, dim>> S(n_q_points);
-    std::vector<SymmetricTensor<4, dim>> C(n_q_points);
-    for (unsigned int batch = 0; batch < this->data->n_cell_batches(); ++batch)
-      for (unsigned int lane = 0; lane < this->data->n_active_entries_per_cell_batch(batch); ++lane)
-        {
-          const auto cell = this->data->get_cell_iterator(batch, lane);
-          fe_values.reinit(cell);
-          cell->get_dof_indices(dofs);
-          for (unsigned int q = 0; q < n_q_points; ++q)
+    for (unsigned int r = 0; r < (reduced ? 2u : 1u); ++r)
+      {
+        const double  share = !reduced ? 1. : r == 0 ? hourglass : 1 - hourglass;
+        const auto   &rule  = state[r];
+        const unsigned int n_q = n_q_points[r];
+        FEValues<dim> fe_values(*this->mapping, fe, QGauss<dim>(this->fe_degree + 1 - r),
+                                update_gradients | update_JxW_values);
+        std::vector<Tensor<2, dim>>          F(n_q);
+        std::vector<SymmetricTensor<2, dim>> S(n_q);
+        std::vector<SymmetricTensor<4, dim>> C(n_q);
+        for (unsigned int batch = 0; batch < this->data->n_cell_batches(); ++batch)
+          for (unsigned int lane = 0; lane < this->data->n_active_entries_per_cell_batch(batch); ++lane)
             {
-              const auto &point = state[batch * n_q_points + q];
-              for (unsigned int a = 0; a < dim; ++a)
-                for (unsigned int b = 0; b < dim; ++b)
-                  {
-                    F[q][a][b] = point.F[a][b][lane];
-                    if (b < a)
-                      continue;
-                    S[q][a][b] = point.S[a][b][lane];
-                    for (unsigned int k = 0; k < dim; ++k)
-                      for (unsigned int l = k; l < dim; ++l)
-                        C[q][a][b][k][l] = point.dS_dE[a][b][k][l][lane];
-                  }
-            }
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const unsigned int c     = fe.system_to_component_index(i).first;
-              double             value = 0;
-              for (unsigned int q = 0; q < n_q_points; ++q)
+              const auto cell = this->data->get_cell_iterator(batch, lane);
+              fe_values.reinit(cell);
+              cell->get_dof_indices(dofs);
+              for (unsigned int q = 0; q < n_q; ++q)
                 {
-                  const Tensor<1, dim>    g = fe_values.shape_grad_component(i, q, c);
-                  SymmetricTensor<2, dim> dE;
+                  const auto &point = rule[batch * n_q + q];
                   for (unsigned int a = 0; a < dim; ++a)
-                    for (unsigned int b = a; b < dim; ++b)
-                      dE[a][b] = 0.5 * (F[q][c][a] * g[b] + F[q][c][b] * g[a]);
-                  value += (dE * (C[q] * dE) + g * (S[q] * g)) * fe_values.JxW(q);
+                    for (unsigned int b = 0; b < dim; ++b)
+                      {
+                        F[q][a][b] = point.F[a][b][lane];
+                        if (b < a)
+                          continue;
+                        S[q][a][b] = point.S[a][b][lane];
+                        for (unsigned int k = 0; k < dim; ++k)
+                          for (unsigned int l = k; l < dim; ++l)
+                            C[q][a][b][k][l] = point.dS_dE[a][b][k][l][lane];
+                      }
                 }
-              diagonal(dofs[i]) += value;
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int c     = fe.system_to_component_index(i).first;
+                  double             value = 0;
+                  for (unsigned int q = 0; q < n_q; ++q)
+                    {
+                      const Tensor<1, dim>    g = fe_values.shape_grad_component(i, q, c);
+                      SymmetricTensor<2, dim> dE;
+                      for (unsigned int a = 0; a < dim; ++a)
+                        for (unsigned int b = a; b < dim; ++b)
+                          dE[a][b] = 0.5 * (F[q][c][a] * g[b] + F[q][c][b] * g[a]);
+                      value += (dE * (C[q] * dE) + g * (S[q] * g)) * fe_values.JxW(q);
+                    }
+                  diagonal(dofs[i]) += share * value;
+                }
             }
-        }
+      }
     diagonal.compress(VectorOperation::add);
   }
 
   template <int dim, typename Number>
   void TangentOperator<dim, Number>::add_kernel_matrix(PETScWrappers::MPI::SparseMatrix &matrix) const
   {
-    tangent_detail::dispatch<dim, Number>(this->fe_degree, [&](auto kernel) {
-      decltype(kernel)::matrix(*this->data, *this->constraints, matrix, state);
+    tangent_detail::for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+      kernel.matrix(*this->data, *this->constraints, matrix, state[kernel.quad]);
     });
   }
 } // namespace compliant::fast_solver

@@ -140,7 +140,9 @@ namespace compliant
           },
           [&](Operator &level_operator, const Mapping<dim> &level_mapping, const DoFHandler<dim> &dofs,
               const AffineConstraints<double> &level_constraints) {
-            level_operator.reinit(level_mapping, dofs, level_constraints);
+            // Integration = reduced: every level of degree >= 2 as the residual (degree 1 stays full).
+            level_operator.reinit(level_mapping, dofs, level_constraints,
+                                  parameters.reduced_integration ? parameters.hourglass_stiffness : -1.);
             set_state(level_operator);
           },
           settings, communicator);

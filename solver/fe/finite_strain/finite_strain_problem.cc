@@ -80,6 +80,9 @@ namespace compliant
     if (plane_stress && mixed)
       throw std::invalid_argument("Finite strain/Formulation: plane stress is displacement-only "
                                   "(the thickness strain takes up the volume change, nothing locks)");
+    if (parameters.reduced_integration && mixed)
+      throw std::invalid_argument("Discretization/Integration = reduced: for the displacement formulation, not "
+                                  "Finite strain/Formulation = mixed (its pressure space needs the full rule)");
     this->create_mesh();
     if (!triangulation.all_reference_cells_are_hyper_cube())
       throw std::invalid_argument("Finite strain: the mesh must be quadrilaterals/hexahedra");

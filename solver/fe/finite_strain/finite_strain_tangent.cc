@@ -57,7 +57,8 @@ namespace compliant
     else
       {
         fast_solver::TangentOperator<dim, double> op;
-        op.reinit(*mapping, dof_handler, constraints);
+        op.reinit(*mapping, dof_handler, constraints,
+                  parameters.reduced_integration ? parameters.hourglass_stiffness : -1.);
         op.set_state(dof_handler, ghosted,
                      [this](const types::material_id id, const Tensor<2, dim> &grad_u,
                             SymmetricTensor<2, dim> &S, SymmetricTensor<4, dim> &dS_dE) {

@@ -108,8 +108,8 @@ namespace compliant
                           "under a varying moment then carries no parasitic shear, so cells many times "
                           "longer than thick are much softer and nearer the answer (a thin leaf in "
                           "torsion on 8 : 1 : 1 cells: energy error 2.9e-2 full, 3.4e-3 reduced at m = 2). "
-                          "Linear static analyses without the model ladder, degree 2 to 4, displacement "
-                          "formulation. Displacements, rotations, reactions, stiffnesses and energies "
+                          "Linear and nonlinear static analyses (the finite-strain residual and tangent "
+                          "alike) without the model ladder, degree 2 to 4, displacement formulation. Displacements, rotations, reactions, stiffnesses and energies "
                           "gain most; stresses are evaluated from the same field, and on coarse meshes "
                           "carry part of the stabilized hourglass modes (README, Speed).");
         prm.declare_entry("Hourglass stiffness", "0.03", Patterns::Double(0, 1),

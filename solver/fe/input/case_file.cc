@@ -224,14 +224,15 @@ namespace compliant
         }
     }
 
-    // Discretization/Integration = reduced is built for the linear static stiffness (assembled and
-    // matrix-free); the finite-strain residual and tangent, mass and geometric stiffness keep p + 1.
+    // Discretization/Integration = reduced is built for the linear static stiffness and the
+    // finite-strain residual and tangent (assembled and matrix-free); mass and geometric stiffness
+    // keep p + 1.
     void check_reduced_integration(const CaseParameters &p)
     {
       const std::string where = "case file '" + p.case_file + "', Discretization/";
-      if (p.reduced_integration && p.analysis != "linear static")
-        throw InputError(where + "Integration = reduced: for linear static analyses, not " + p.analysis +
-                         " (its finite-strain, mass or geometric stiffness stay fully integrated)");
+      if (p.reduced_integration && p.analysis != "linear static" && p.analysis != "nonlinear static")
+        throw InputError(where + "Integration = reduced: for linear and nonlinear static analyses, not " +
+                         p.analysis + " (its mass or geometric stiffness stay fully integrated)");
       if (p.reduced_integration && (p.element_degree < 2 || p.formulation == Formulation::mixed))
         throw InputError(where + "Integration = reduced needs Element degree 2 to 4 and Formulation = "
                          "displacement (one Gauss point per direction leaves a degree-1 cell without "
