@@ -10,6 +10,7 @@
 #include <deal.II/matrix_free/tools.h>
 
 #include "discretization/reduced_integration.h"
+#include "fast_solver/integration_rules.h"
 
 #include <stdexcept>
 
@@ -96,33 +97,6 @@ namespace compliant::fast_solver
           0, quad);
       }
     };
-
-    // Runs visitor(kernel) for each rule of the run-time degree (1-4: the element degrees offered):
-    // the full rule, and with reduced integration the reduced one too, each with its share.
-    template <int dim, typename Number, typename Visitor>
-    void for_each_rule(const unsigned int degree, const bool reduced, const double hourglass, const Visitor &visitor)
-    {
-      const auto run = [&](auto full, auto reduced_rule) {
-        full.scale = reduced ? hourglass : 1;
-        visitor(full);
-        if (reduced)
-          {
-            reduced_rule.quad  = 1;
-            reduced_rule.scale = 1 - hourglass;
-            visitor(reduced_rule);
-          }
-      };
-      switch (degree)
-        {
-          case 1: run(Kernel<dim, 1, 2, Number>(), Kernel<dim, 1, 1, Number>()); break;
-          case 2: run(Kernel<dim, 2, 3, Number>(), Kernel<dim, 2, 2, Number>()); break;
-          case 3: run(Kernel<dim, 3, 4, Number>(), Kernel<dim, 3, 3, Number>()); break;
-          case 4: run(Kernel<dim, 4, 5, Number>(), Kernel<dim, 4, 4, Number>()); break;
-          default:
-            throw std::invalid_argument("matrix-free elasticity: element degree " +
-                                        std::to_string(degree) + " is not compiled (1-4)");
-        }
-    }
   } // namespace
 
   template <int dim, typename Number>
@@ -155,7 +129,7 @@ namespace compliant::fast_solver
     this->data->template cell_loop<VectorType, VectorType>(
       [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
           const std::pair<unsigned int, unsigned int> &range) {
-        for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass,
+        for_each_rule<Kernel, dim, Number>(this->fe_degree, reduced, hourglass,
                                    [&](const auto &kernel) { kernel.apply(mf, d, s, range, lambda, mu, plain); });
       },
       dst, src, true);
@@ -164,7 +138,7 @@ namespace compliant::fast_solver
   template <int dim, typename Number>
   void ElasticityOperator<dim, Number>::add_kernel_diagonal(VectorType &diagonal) const
   {
-    for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass,
+    for_each_rule<Kernel, dim, Number>(this->fe_degree, reduced, hourglass,
                                [&](const auto &kernel) { kernel.diagonal(*this->data, diagonal, lambda, mu); });
   }
 
@@ -205,7 +179,7 @@ namespace compliant::fast_solver
   template <int dim, typename Number>
   void ElasticityOperator<dim, Number>::add_kernel_matrix(PETScWrappers::MPI::SparseMatrix &matrix) const
   {
-    for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+    for_each_rule<Kernel, dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
       kernel.matrix(*this->data, *this->constraints, matrix, lambda, mu);
     });
   }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "fast_solver/tangent_operator.h"
+#include "fast_solver/integration_rules.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -84,32 +85,6 @@ namespace compliant::fast_solver
           0, quad);
       }
     };
-
-    // Runs visitor(kernel) for each rule of the run-time degree (1-4), each with its share.
-    template <int dim, typename Number, typename Visitor>
-    void for_each_rule(const unsigned int degree, const bool reduced, const double hourglass, const Visitor &visitor)
-    {
-      const auto run = [&](auto full, auto reduced_rule) {
-        full.scale = reduced ? hourglass : 1;
-        visitor(full);
-        if (reduced)
-          {
-            reduced_rule.quad  = 1;
-            reduced_rule.scale = 1 - hourglass;
-            visitor(reduced_rule);
-          }
-      };
-      switch (degree)
-        {
-          case 1: run(Kernel<dim, 1, 2, Number>(), Kernel<dim, 1, 1, Number>()); break;
-          case 2: run(Kernel<dim, 2, 3, Number>(), Kernel<dim, 2, 2, Number>()); break;
-          case 3: run(Kernel<dim, 3, 4, Number>(), Kernel<dim, 3, 3, Number>()); break;
-          case 4: run(Kernel<dim, 4, 5, Number>(), Kernel<dim, 4, 4, Number>()); break;
-          default:
-            throw std::invalid_argument("matrix-free tangent: element degree " +
-                                        std::to_string(degree) + " is not compiled (1-4)");
-        }
-    }
   } // namespace tangent_detail
 
   template <int dim, typename Number>
@@ -191,7 +166,7 @@ namespace compliant::fast_solver
     this->data->template cell_loop<VectorType, VectorType>(
       [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
           const std::pair<unsigned int, unsigned int> &range) {
-        tangent_detail::for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+        for_each_rule<tangent_detail::Kernel, dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
           kernel.apply(mf, d, s, range, state[kernel.quad], plain);
         });
       },
@@ -201,7 +176,7 @@ namespace compliant::fast_solver
   template <int dim, typename Number>
   void TangentOperator<dim, Number>::add_kernel_diagonal(VectorType &diagonal) const
   {
-    tangent_detail::for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+    for_each_rule<tangent_detail::Kernel, dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
       kernel.diagonal(*this->data, diagonal, state[kernel.quad]);
     });
   }
@@ -269,7 +244,7 @@ namespace compliant::fast_solver
   template <int dim, typename Number>
   void TangentOperator<dim, Number>::add_kernel_matrix(PETScWrappers::MPI::SparseMatrix &matrix) const
   {
-    tangent_detail::for_each_rule<dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+    for_each_rule<tangent_detail::Kernel, dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
       kernel.matrix(*this->data, *this->constraints, matrix, state[kernel.quad]);
     });
   }
