@@ -3,7 +3,7 @@
 that do not come from the contact code: Hertz's closed form, the run without the obstacle, the
 equilibrium of the reactions, and the same run on other rank counts.
 
-    contact_checks.py hertz | sphere | ranks | motion | stop | stop_3d | former
+    contact_checks.py hertz | sphere | ranks | motion | stop | stop_3d | former | friction
 """
 import csv
 import math
@@ -23,6 +23,7 @@ STOP = os.path.join(cases, "contact", "flexure_hinge_stop.prm")
 STOP_3D = os.path.join(cases, "contact", "cantilever_3d_stop.prm")
 FORMER = os.path.join(cases, "contact", "leaf_former.prm")
 SPHERE = os.path.join(cases, "contact", "hertz_sphere.prm")
+FRICTION = os.path.join(cases, "contact", "friction_block.prm")
 
 
 def run_with_files(case, sets=(), np=2, fields=None):
@@ -317,6 +318,64 @@ elif mode == "former":
         check(abs(residual) <= 1e-6 * F, "forces in %s: clamp %.6g + former %.6g + load %.3g = %.2g"
               % (axis, q["reaction_force_left_" + axis], q["contact_force_former_" + axis], load, residual))
     no_penetration(q, nodes, "leaf on its former")
+elif mode == "friction":
+    # Coulomb friction (cases/contact/friction_block.prm, mu = 0.3): a block pressed onto a rising
+    # plane, its top carried sideways by s. Coulomb's law: a node sticks while its tangential force
+    # is within mu times its normal force, else it slides against mu times it. Dragged ten times
+    # further than the shear friction can carry (s = 0.006 against 2 mu d = 0.0006), every bottom
+    # node slides the same way, so the plane's tangential force is mu times its normal force; the
+    # top's reaction balances it (an independent sum: the support's residual).
+    MU = 0.3
+    q, curve, nodes = run_with_files(FRICTION)
+    n = q["contact_nodes_ground"]
+    check(q["contact_slipping_nodes_ground"] == n == 21, "dragged: all %d bottom nodes slide (%d)"
+          % (n, q["contact_slipping_nodes_ground"]))
+    ratio = q["contact_force_ground_x"] / q["contact_force_ground_y"]
+    check(abs(ratio + MU) < 1e-8, "dragged: tangential / normal force %.12g = -mu (to 1e-8)" % ratio)
+    for axis in ("x", "y"):
+        total = q["contact_force_ground_" + axis] + q["reaction_force_top_" + axis]
+        check(abs(total) <= 1e-8 * q["contact_force_ground_y"], "dragged: plane + top forces in %s = %.2g" % (axis, total))
+    no_penetration(q, nodes, "dragged block")
+    # Half the shear the friction can carry: the bottom sticks, each node carried exactly with
+    # the plane (which only rises), and the plane's tangential force stays within the cone.
+    stuck, _, nodes = run_with_files(FRICTION, ["Boundary conditions/Displacement=top: x=0.0003, y=0"])
+    check(stuck["contact_sticking_nodes_ground"] == 21 and stuck["contact_slipping_nodes_ground"] == 0,
+          "held back: all 21 bottom nodes stick (%d slip)" % stuck["contact_slipping_nodes_ground"])
+    moved = max(abs(float(r["x"]) - float(r["reference_x"])) for r in nodes)
+    check(moved == 0 or moved < 1e-14, "held back: the bottom nodes do not move along the plane (largest %.2g)" % moved)
+    ratio = abs(stuck["contact_force_ground_x"] / stuck["contact_force_ground_y"])
+    check(0 < ratio < MU, "held back: tangential / normal force %.4f within mu" % ratio)
+    readme_figure(ratio, "0.138", "held back: tangential / normal force (README)")
+    # Frictionless (mu = 0): no tangential force; and the same as with friction on 1 and 3 ranks.
+    smooth, _, _ = run_with_files(FRICTION, ["Contact/Obstacles=ground: plane, point=0 -1, normal=0 1, motion=0 0.001"])
+    check(abs(smooth["contact_force_ground_x"]) < 1e-10 * smooth["contact_force_ground_y"],
+          "frictionless: tangential force %.2g" % smooth["contact_force_ground_x"])
+    for ranks in (1, 3):
+        other, _, _ = run_with_files(FRICTION, ["Boundary conditions/Displacement=top: x=0.0006, y=0"], np=ranks)
+        if ranks == 1:
+            first = other
+        else:
+            check(abs(other["contact_force_ground_x"] - first["contact_force_ground_x"]) <= 1e-9 * first["contact_force_ground_y"]
+                  and other["contact_sticking_nodes_ground"] == first["contact_sticking_nodes_ground"],
+                  "at the threshold (s = 2 mu d): 3 ranks = 1 rank (%.12g, %.12g; %d and %d sticking)"
+                  % (other["contact_force_ground_x"], first["contact_force_ground_x"],
+                     other["contact_sticking_nodes_ground"], first["contact_sticking_nodes_ground"]))
+    # 3D: a 10 x 10 x 2 block on a plane x = 0, its far face carried along (2, 1) in y, z. The
+    # friction lies in the plane, against the slide: magnitude mu times the normal force, direction
+    # z / y = 1/2 (to the elastic part of the slide, 1e-4 here).
+    block3 = ["Model=3d", "Geometry/Mesh file=cantilever_3d.geo", "Geometry/Parameters/L=2", "Geometry/Parameters/H=10",
+              "Geometry/Parameters/W=10", "Geometry/Parameters/nx=1", "Geometry/Parameters/ny=3",
+              "Geometry/Parameters/nz=3", "Boundary conditions/Displacement=right: x=0, y=0.006, z=0.003",
+              "Contact/Obstacles=ground: plane, point=0 0 0, normal=1 0 0, motion=0.001 0 0, friction=0.3",
+              "Contact/Boundaries=left", "Quantities/Reactions=right", "Quantities/Derived="]
+    q3, _, nodes = run_with_files(FRICTION, block3)
+    fy, fz, fx = q3["contact_force_ground_y"], q3["contact_force_ground_z"], q3["contact_force_ground_x"]
+    check(q3["contact_slipping_nodes_ground"] == q3["contact_nodes_ground"] == 49, "3D: all %d face nodes slide"
+          % q3["contact_slipping_nodes_ground"])
+    check(abs(math.hypot(fy, fz) / fx - MU) < 1e-5, "3D: |tangential| / normal force %.9f = mu (to 1e-5: the "
+          "normal force of the last Newton iterate)" % (math.hypot(fy, fz) / fx))
+    check(abs(fz / fy - 0.5) < 1e-3 and fy < 0, "3D: friction along -(2, 1): z / y = %.6f, y %.4g" % (fz / fy, fy))
+    no_penetration(q3, nodes, "3D block")
 else:
-    unknown_mode(mode, ("hertz", "sphere", "ranks", "motion", "stop", "stop_3d", "former"))
+    unknown_mode(mode, ("hertz", "sphere", "ranks", "motion", "stop", "stop_3d", "former", "friction"))
 finish()

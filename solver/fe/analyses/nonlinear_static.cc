@@ -162,6 +162,8 @@ namespace compliant
           for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
             q["contact_moment_" + name + "_" + axes[d]] = r.moment[d];
           q["contact_nodes_" + name] = r.nodes;
+          if (problem.contact->obstacles[o].friction > 0)
+            q["contact_sticking_nodes_" + name] = r.sticking, q["contact_slipping_nodes_" + name] = r.slipping;
         }
       q["contact_active_nodes"]          = result.active_nodes;
       q["contact_max_penetration"]       = result.max_penetration;

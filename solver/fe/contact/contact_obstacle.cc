@@ -16,19 +16,22 @@ namespace compliant
     prm.enter_subsection("Contact");
     prm.declare_entry(
       "Obstacles", "", Patterns::Anything(),
-      "Rigid obstacles the part may touch (nonlinear static analyses; frictionless): "
+      "Rigid obstacles the part may touch (nonlinear static analyses): "
       "'stop: plane, point=x y [z], normal=nx ny [nz]; pin: circle, center=x y, radius=r; "
       "former: cylinder, center=x y z, axis=ax ay az, radius=r; ball: sphere, center=x y z, "
       "radius=r'. A plane's normal points from the obstacle towards the part (the obstacle is "
       "the half-space behind it); circle is 2D, cylinder (axis) and sphere 3D (cylinder in 2D is a "
       "circle). Optional per obstacle: motion=dx dy [dz], a rigid translation reached at load "
-      "factor 1 (scaled by the load factor), and boundaries=name name, the part's boundaries that "
-      "may touch it (default: Contact/Boundaries). Values may be expressions of geometry "
+      "factor 1 (scaled by the load factor), friction=mu, a Coulomb coefficient (default 0, "
+      "frictionless: a held node sticks while its tangential force stays within mu times its "
+      "normal force, and slips against mu times it beyond), and boundaries=name name, the part's "
+      "boundaries that may touch it (default: Contact/Boundaries). Values may be expressions of geometry "
       "parameters. Solved by a primal-dual active set (semismooth Newton, as deal.II step-41): "
       "each node of those boundaries is either free or held on the obstacle surface, decided "
       "inside Newton from its gap and contact force; no penalty stiffness. Gives "
       "contact_force_<name>_<x|y|z> (on the part), contact_moment_<name>_<z|x y z> (about the "
-      "origin, deformed positions), contact_nodes_<name>, contact_active_nodes (per step in "
+      "origin, deformed positions), contact_nodes_<name> (with friction also "
+      "contact_sticking_nodes_<name> and contact_slipping_nodes_<name>), contact_active_nodes (per step in "
       "curve.csv), contact_max_penetration and contact_penetration_tolerance; contact.csv lists "
       "every contact node (position, gap, force, pressure).");
     prm.declare_entry("Boundaries", "", Patterns::Anything(),
@@ -112,10 +115,10 @@ namespace compliant
     const std::map<std::string, std::pair<std::set<std::string>, std::set<std::string>>> &kind_fields()
     {
       static const std::map<std::string, std::pair<std::set<std::string>, std::set<std::string>>> fields{
-        {"plane", {{"point", "normal", "motion", "boundaries"}, {"point", "normal"}}},
-        {"circle", {{"center", "radius", "motion", "boundaries"}, {"center", "radius"}}},
-        {"cylinder", {{"center", "radius", "axis", "motion", "boundaries"}, {"center", "radius"}}},
-        {"sphere", {{"center", "radius", "motion", "boundaries"}, {"center", "radius"}}}};
+        {"plane", {{"point", "normal", "motion", "friction", "boundaries"}, {"point", "normal"}}},
+        {"circle", {{"center", "radius", "motion", "friction", "boundaries"}, {"center", "radius"}}},
+        {"cylinder", {{"center", "radius", "axis", "motion", "friction", "boundaries"}, {"center", "radius"}}},
+        {"sphere", {{"center", "radius", "motion", "friction", "boundaries"}, {"center", "radius"}}}};
       return fields;
     }
   } // namespace
@@ -158,6 +161,14 @@ namespace compliant
           if (!item.has(key))
             throw std::invalid_argument(where + ": obstacle '" + o.name + "' (" + kind + ") needs " + key + "=");
         o.motion = vector_field<dim>(item, "motion", variables, where, false);
+        if (item.has("friction"))
+          {
+            o.friction = evaluate_expression(item.get("friction"), variables, where + " friction of '" + o.name + "'");
+            if (!(o.friction >= 0) || !std::isfinite(o.friction))
+              throw std::invalid_argument(where + ": friction of obstacle '" + o.name +
+                                          "' must be a coefficient >= 0 (0: frictionless), got '" +
+                                          item.get("friction") + "'");
+          }
         if (kind == "plane")
           {
             o.point     = Point<dim>(vector_field<dim>(item, "point", variables, where, true));

@@ -1,7 +1,8 @@
 // Rigid obstacles a part may touch (case-file section Contact): a plane (half-space), a circle
 // (2D) or cylinder (3D), a sphere, each translated by `motion` times the load factor. An obstacle
 // knows only its signed distance: gap(x) > 0 outside it, with the outward normal (from the
-// obstacle towards the part), whose linearisation n . du drives the contact constraints.
+// obstacle towards the part), whose linearisation n . du drives the contact constraints, and its
+// Coulomb friction coefficient.
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
@@ -42,6 +43,7 @@ namespace compliant
     dealii::Tensor<1, dim> direction; // plane: unit normal towards the part; cylinder: unit axis (3D)
     double                 radius = 0;
     dealii::Tensor<1, dim> motion; // translation at load factor 1
+    double                 friction = 0; // Coulomb coefficient mu (0: frictionless)
     std::set<int>          boundary_ids;
 
     // Signed distance of x from the surface at the load factor, and the unit outward normal there.

@@ -41,6 +41,7 @@ namespace compliant
 
   template <int dim>
   ContactSet<dim>::ContactSet(std::vector<Obstacle<dim>> obstacles_in, const std::set<int> &excluded,
+                              const std::set<int> &supported,
                               const DoFHandler<dim> &dofs, const Mapping<dim> &mapping,
                               const Quadrature<dim - 1> &face_quadrature, const IndexSet &owned,
                               const IndexSet &relevant, const double thickness, const double relative_tolerance,
@@ -58,7 +59,7 @@ namespace compliant
     FEFaceValues<dim>     face_values(mapping, fe, face_quadrature, update_values | update_JxW_values);
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     std::map<types::global_dof_index, Node> by_dof; // by the node's x DoF
-    std::set<types::global_dof_index>       left_out;
+    std::set<types::global_dof_index>       left_out, held;
     PETScWrappers::MPI::Vector              area(owned, communicator);
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned() || cell->is_ghost())
@@ -70,21 +71,24 @@ namespace compliant
             std::vector<bool>  allowed(obstacles.size());
             for (unsigned int o = 0; o < obstacles.size(); ++o)
               allowed[o] = obstacles[o].boundary_ids.count(id) > 0;
-            const bool is_excluded = excluded.count(id) > 0;
-            if (!is_excluded && std::find(allowed.begin(), allowed.end(), true) == allowed.end())
+            const bool is_excluded = excluded.count(id) > 0, is_supported = supported.count(id) > 0;
+            const bool touches     = std::find(allowed.begin(), allowed.end(), true) != allowed.end();
+            if (!is_excluded && !is_supported && !touches)
               continue;
             for (const auto &[index, face_node] : face_nodes(cell, f, fe_values))
               {
                 const Node node{face_node.dofs, face_node.position, allowed};
                 if (is_excluded)
                   left_out.insert(node.dofs[0]);
+                if (is_supported)
+                  held.insert(node.dofs[0]);
                 auto [it, inserted] = by_dof.emplace(node.dofs[0], node);
                 if (!inserted)
                   for (unsigned int o = 0; o < obstacles.size(); ++o)
                     it->second.allowed[o] = it->second.allowed[o] || node.allowed[o];
               }
             // The lumped area of each node: the integral of its shape function over the face.
-            if (cell->is_locally_owned() && !is_excluded)
+            if (cell->is_locally_owned() && !is_excluded && touches)
               {
                 cell->get_dof_indices(cell_dofs);
                 face_values.reinit(cell, f);
@@ -103,10 +107,11 @@ namespace compliant
     PETScWrappers::MPI::Vector ghosted_area(owned, relevant, communicator);
     ghosted_area = area;
     for (const auto &[first, node] : by_dof)
-      if (left_out.count(first) == 0)
+      if (left_out.count(first) == 0 && std::find(node.allowed.begin(), node.allowed.end(), true) != node.allowed.end())
         {
-          Node n  = node;
-          n.owned = owned.is_element(first);
+          Node n      = node;
+          n.owned     = owned.is_element(first);
+          n.supported = held.count(first) > 0;
           n.area  = ghosted_area(first);
           nodes.push_back(n);
         }
@@ -199,11 +204,19 @@ namespace compliant
               const bool pulls = lambda < -force_tolerance;
               update.pulling += pulls;
               now = pulls && release ? -1 : node.active;
+              if (now >= 0 && !node.supported && obstacles[now].friction > 0)
+                update_friction(node, x, gap, n, residual, load_factor, release, force_tolerance, update);
             }
           else
             {
               const unsigned int o = nearest(node, x, load_factor, gap, n);
               now                  = gap < -tolerance ? static_cast<int>(o) : -1;
+              // A node held at the step's start and freed by a Newton iterate on its way keeps
+              // that anchor (it did not land elsewhere); one that lands in the step sticks there.
+              if (now >= 0 && !node.step_anchor)
+                stick_at(node, x, gap, n, load_factor);
+              else if (now >= 0)
+                node.slip = false;
             }
           update.changes += now != node.active;
           update.violation = std::max(update.violation, now >= 0 ? std::abs(gap) : -gap);
@@ -219,16 +232,48 @@ namespace compliant
   template <int dim>
   void ContactSet<dim>::share_active_set()
   {
-    PETScWrappers::MPI::Vector status(owned_dofs, communicator);
+    // Status at the node's first DoF: 0 free, +-(obstacle + 1) held (negative: slipping); with
+    // friction the anchor at the node's DoFs and its load factor at the first.
+    const bool                 friction = has_friction();
+    PETScWrappers::MPI::Vector status(owned_dofs, communicator), anchor, anchor_load;
+    if (friction)
+      anchor.reinit(owned_dofs, communicator), anchor_load.reinit(owned_dofs, communicator);
     for (const auto &node : nodes)
       if (node.owned)
-        status(node.dofs[0]) = node.active + 1;
+        {
+          status(node.dofs[0]) = (node.active + 1) * (node.slip ? -1 : 1);
+          if (friction)
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                anchor(node.dofs[d]) = node.anchor[d];
+              anchor_load(node.dofs[0]) = node.anchor_load;
+            }
+        }
     status.compress(VectorOperation::insert);
-    PETScWrappers::MPI::Vector ghosted(owned_dofs, relevant_dofs, communicator);
+    PETScWrappers::MPI::Vector ghosted(owned_dofs, relevant_dofs, communicator), ghosted_anchor, ghosted_load;
     ghosted = status;
+    if (friction)
+      {
+        anchor.compress(VectorOperation::insert);
+        anchor_load.compress(VectorOperation::insert);
+        ghosted_anchor.reinit(owned_dofs, relevant_dofs, communicator);
+        ghosted_load.reinit(owned_dofs, relevant_dofs, communicator);
+        ghosted_anchor = anchor;
+        ghosted_load   = anchor_load;
+      }
     for (auto &node : nodes)
       if (!node.owned)
-        node.active = static_cast<int>(std::lround(ghosted(node.dofs[0]))) - 1;
+        {
+          const long code = std::lround(ghosted(node.dofs[0]));
+          node.active     = static_cast<int>(std::abs(code)) - 1;
+          node.slip       = code < 0;
+          if (friction)
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                node.anchor[d] = ghosted_anchor(node.dofs[d]);
+              node.anchor_load = ghosted_load(node.dofs[0]);
+            }
+        }
   }
 
   template <int dim>
@@ -236,7 +281,18 @@ namespace compliant
                                         const double load_factor, const bool homogeneous) const
   {
     for (const auto &node : nodes)
-      if (node.active >= 0)
+      if (frictional(node) && !node.slip)
+        {
+          // Sticking: held at its anchor in every free component.
+          const Point<dim> x = position(node, u), target = stick_target(node, load_factor);
+          for (unsigned int d = 0; d < dim; ++d)
+            if (!constraints.is_constrained(node.dofs[d]))
+              {
+                constraints.add_line(node.dofs[d]);
+                constraints.set_inhomogeneity(node.dofs[d], homogeneous ? 0. : target[d] - x[d]);
+              }
+        }
+      else if (node.active >= 0)
         {
           Tensor<1, dim> n;
           const double   gap = obstacles[node.active].gap(position(node, u), load_factor, n);
@@ -270,13 +326,16 @@ namespace compliant
           result.max_penetration = std::max(result.max_penetration, -state.nearest_gap);
           if (node.active < 0)
             continue;
-          auto &r = result.obstacles[node.active];
-          r.force += state.force * state.normal;
+          auto                &r = result.obstacles[node.active];
+          const Tensor<1, dim> f = contact_force(node, state.normal, state.force, residual);
+          r.force += f;
           Tensor<1, 3> x3, f3;
           for (unsigned int d = 0; d < dim; ++d)
-            x3[d] = state.x[d], f3[d] = state.force * state.normal[d];
+            x3[d] = state.x[d], f3[d] = f[d];
           r.moment += cross_product_3d(x3, f3);
           ++r.nodes;
+          if (frictional(node))
+            ++(node.slip ? r.slipping : r.sticking);
           ++result.active_nodes;
         }
     for (auto &r : result.obstacles)
@@ -284,6 +343,8 @@ namespace compliant
         r.force  = Utilities::MPI::sum(r.force, communicator);
         r.moment = Utilities::MPI::sum(r.moment, communicator);
         r.nodes  = Utilities::MPI::sum(r.nodes, communicator);
+        r.sticking = Utilities::MPI::sum(r.sticking, communicator);
+        r.slipping = Utilities::MPI::sum(r.slipping, communicator);
       }
     result.active_nodes    = Utilities::MPI::sum(result.active_nodes, communicator);
     result.max_penetration = std::max(0., Utilities::MPI::max(result.max_penetration, communicator));

@@ -10,6 +10,13 @@
 // iteration; an active node's gap is closed by its constraint anyway.) Newton has converged only
 // when the set no longer changes and no node lies deeper than the tolerance: there is no penalty
 // stiffness for the answer to depend on.
+// Coulomb friction (an obstacle's friction mu > 0, contact/contact_friction.cc): a node that comes
+// into contact sticks, held in every direction at its point of the surface, which moves with the
+// obstacle; near equilibrium a sticking node whose tangential force exceeds mu times its normal
+// force slips: it is held on the surface by the normal constraint alone and pushed back by mu times
+// its normal force (that of the last iterate: a fixed point inside Newton) against its slip within
+// the step (the tangent has the force's turning with the slip in 3D). Every load step starts with
+// the held nodes sticking where the last one left them (start_step).
 #pragma once
 
 #include <deal.II/base/point.h>
@@ -17,6 +24,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
 #include "contact/contact_obstacle.h"
@@ -35,8 +43,9 @@ namespace compliant
     // Gathers the nodes of the obstacles' boundaries on this rank's cells (owned and ghost);
     // nodes on an `excluded` boundary (a rigid boundary: its nodes are already tied) are left
     // out. thickness: of a 2D model, for the nodes' areas; tolerance: fraction of the part's size.
-    // Collective.
-    ContactSet(std::vector<Obstacle<dim>> obstacles, const std::set<int> &excluded,
+    // Nodes on a `supported` boundary (clamped, displaced, turned) touch without friction: the
+    // support holds them tangentially, and their reaction is the support's. Collective.
+    ContactSet(std::vector<Obstacle<dim>> obstacles, const std::set<int> &excluded, const std::set<int> &supported,
                const dealii::DoFHandler<dim> &dofs, const dealii::Mapping<dim> &mapping,
                const dealii::Quadrature<dim - 1> &face_quadrature, const dealii::IndexSet &owned,
                const dealii::IndexSet &relevant, double thickness, double tolerance,
@@ -59,17 +68,31 @@ namespace compliant
                              double force_tolerance);
 
     // Adds the constraint of every active node on the correction du at state u:
-    // n . du = -gap (homogeneous: = 0). Components already constrained are kept out; a node whose
-    // free components cannot move along n is left free.
+    // n . du = -gap (homogeneous: = 0), or a sticking node's du = its anchor - x in every
+    // component. Components already constrained are kept out; a node whose free components cannot
+    // move along n is left free.
     void add_constraints(dealii::AffineConstraints<double> &constraints,
                          const dealii::PETScWrappers::MPI::Vector &u, double load_factor,
                          bool homogeneous) const;
 
+    // The friction forces of the slipping nodes this rank owns (-mu times the normal force of the
+    // last update along the slip direction) added to the residual r = f_ext - f_int: condensed
+    // through `constraints` (nodal without), and nodal into `full`. Before compress(add).
+    void add_friction_forces(const dealii::AffineConstraints<double> *constraints,
+                             dealii::PETScWrappers::MPI::Vector &residual, dealii::PETScWrappers::MPI::Vector *full) const;
+    // The friction forces' derivative for the tangent: a slipping node's force -mu N s / |s| turns
+    // with its slip s, a stiffness mu N / |s| across the slip in the surface (zero in 2D).
+    // Condensed through `constraints` (nodal without); before compress(add).
+    void add_friction_stiffness(const dealii::AffineConstraints<double> *constraints,
+                                dealii::PETScWrappers::MPI::SparseMatrix &tangent) const;
+    bool has_friction() const;
+
     struct ObstacleResult
     {
-      dealii::Tensor<1, dim> force;  // on the part
+      dealii::Tensor<1, dim> force;  // on the part (normal and friction)
       dealii::Tensor<1, 3>   moment; // about the origin, at the deformed positions
       unsigned int           nodes = 0;
+      unsigned int           sticking = 0, slipping = 0; // with friction
     };
     struct Result
     {
@@ -94,6 +117,11 @@ namespace compliant
                       double load_factor, dealii::PETScWrappers::MPI::Vector &pressure,
                       dealii::PETScWrappers::MPI::Vector &gap) const;
 
+    // Friction: a load step starts from its converged state (u, ghosted) with every held node
+    // sticking where it is (the trial state of a return mapping); it slips within the step
+    // once the cone is exceeded, relative to there. Also after a failed step, from the saved state.
+    void start_step(const dealii::PETScWrappers::MPI::Vector &u, double load_factor);
+
     // Frees every node (a path restarted from rest).
     void release_all()
     {
@@ -112,9 +140,24 @@ namespace compliant
       std::vector<bool>                                allowed; // per obstacle
       double                                           area = 0;
       bool                                             owned = false;
+      bool                                             supported = false; // no friction
       int                                              active = -1; // obstacle index, or free
+      // With friction: sticking at `anchor` (a point of the surface, moving with the obstacle
+      // from load factor anchor_load on) or slipping along slip_direction (the part's motion
+      // relative to the obstacle) under the normal force of the last update.
+      bool                   slip = false;
+      dealii::Point<dim>     anchor;
+      double                 anchor_load = 0, normal_force = 0, slip_length = 0;
+      bool                   step_anchor = false; // anchored by start_step: kept if freed and held again
+      dealii::Tensor<1, dim> slip_direction;
     };
     std::vector<Node> nodes;
+    // Whether a held node is under friction (its obstacle has some, and no support holds it).
+    bool frictional(const Node &node) const
+    {
+      return node.active >= 0 && !node.supported && obstacles[node.active].friction > 0;
+    }
+
     MPI_Comm          communicator;
     dealii::IndexSet  owned_dofs, relevant_dofs;
 
@@ -122,7 +165,21 @@ namespace compliant
     // The obstacle of a free node: the one it is nearest to (or deepest in).
     unsigned int nearest(const Node &node, const dealii::Point<dim> &x, double load_factor, double &gap,
                          dealii::Tensor<1, dim> &normal) const;
-    void         share_active_set(); // the owners' decisions to the ranks that see a node as ghost
+    // The owners' decisions (active set, stick or slip, anchors) to the ranks that see a node as ghost.
+    void         share_active_set();
+    // Friction: a node coming into contact at x (gap, normal n) sticks at its point of the surface.
+    void         stick_at(Node &node, const dealii::Point<dim> &x, double gap, const dealii::Tensor<1, dim> &n,
+                          double load_factor) const;
+    // Where a sticking node is held at the load factor.
+    dealii::Point<dim> stick_target(const Node &node, double load_factor) const;
+    // A held node on an obstacle with friction: stick to slip, slip to stick, the normal force.
+    void update_friction(Node &node, const dealii::Point<dim> &x, double gap, const dealii::Tensor<1, dim> &n,
+                         const dealii::PETScWrappers::MPI::Vector &residual, double load_factor, bool release,
+                         double force_tolerance, Update &update) const;
+    // The force of a held node on the part: -r, or its normal part and the friction of a slipping node.
+    // normal and force: the held node's normal and normal force (NodeState).
+    dealii::Tensor<1, dim> contact_force(const Node &node, const dealii::Tensor<1, dim> &normal, double force,
+                                         const dealii::PETScWrappers::MPI::Vector &residual) const;
     // A node at state u: its position, the gap to the nearest obstacle, and, if held, the gap to
     // its obstacle, the normal there and the contact force along it (from r = f_ext - f_int).
     struct NodeState

@@ -362,6 +362,12 @@ namespace compliant
         if (full_residual != nullptr)
           rigid.add_load(lambda, nullptr, *full_residual);
       }
+    if (contact) // the friction of slipping contact nodes: an external force, and its derivative
+      {
+        contact->add_friction_forces(constraints, residual, full_residual);
+        if (with_matrix)
+          contact->add_friction_stiffness(constraints, tangent);
+      }
     if (with_matrix)
       tangent.compress(VectorOperation::add);
     residual.compress(VectorOperation::add);

@@ -28,8 +28,13 @@ namespace compliant
     {
       saved             = problem.solution;
       saved_load_factor = problem.load_factor;
+      problem.start_contact_step();
     }
-    void   restore_state() override { problem.restore(saved, saved_load_factor); }
+    void restore_state() override
+    {
+      problem.restore(saved, saved_load_factor);
+      problem.start_contact_step();
+    }
     double change_from_saved_state() const override
     {
       dealii::PETScWrappers::MPI::Vector change(problem.locally_owned_dofs, problem.communicator);

@@ -215,6 +215,16 @@ namespace compliant
   }
 
   template <int dim>
+  void FiniteStrainProblem<dim>::start_contact_step()
+  {
+    if (!contact || !contact->has_friction())
+      return;
+    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+    ghosted = solution;
+    contact->start_step(ghosted, load_factor);
+  }
+
+  template <int dim>
   void FiniteStrainProblem<dim>::set_up_contact()
   {
     contact.reset();
@@ -224,8 +234,15 @@ namespace compliant
     std::set<int> rigid_ids; // their nodes are tied to the rigid motion already
     for (const auto &rigid : rigid_boundaries)
       rigid_ids.insert(rigid.load.boundary_id);
-    contact = std::make_unique<ContactSet<dim>>(std::move(obstacles), rigid_ids, dof_handler, *mapping, *face_quadrature,
-                                                locally_owned_dofs, locally_relevant_dofs, thickness,
+    std::set<int> supported_ids; // held by a support: no friction there (its reaction is the support's)
+    for (const auto &[name, id] : boundary_conditions.clamped)
+      supported_ids.insert(id);
+    for (const auto &d : boundary_conditions.displacements)
+      supported_ids.insert(d.boundary_id);
+    for (const auto &r : boundary_conditions.rotations)
+      supported_ids.insert(r.boundary_id);
+    contact = std::make_unique<ContactSet<dim>>(std::move(obstacles), rigid_ids, supported_ids, dof_handler, *mapping,
+                                                *face_quadrature, locally_owned_dofs, locally_relevant_dofs, thickness,
                                                 settings.contact.tolerance, communicator);
   }
 

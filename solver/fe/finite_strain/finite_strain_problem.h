@@ -98,6 +98,9 @@ namespace compliant
       solution    = state;
       load_factor = state_load_factor;
     }
+    // Contact with friction: the next load step starts with the held nodes sticking where the
+    // current (converged) state has them.
+    void start_contact_step();
 
     // Negative eigenvalues of the condensed tangent stiffness at the current state (0: stable
     // equilibrium under the applied loads; a limit point or bifurcation has been passed
