@@ -22,7 +22,8 @@ namespace compliant
       return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
     };
     if (starts("n_") || starts("time_") || starts("solver_") || starts("eigen") || ends("_error_estimate") ||
-        ends("_error_estimate_absolute") || starts("error_estimate_") || starts("contact_nodes_"))
+        ends("_error_estimate_absolute") || starts("error_estimate_") || starts("contact_nodes_") ||
+        starts("contact_sticking_nodes_") || starts("contact_slipping_nodes_"))
       return false;
     // A path's counts and where it stands are not values of the model to converge.
     static const std::set<std::string> path_records = {

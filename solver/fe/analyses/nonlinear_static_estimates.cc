@@ -31,7 +31,9 @@ namespace compliant
       // A path that stopped short (unstable, a failed step, a signal) is followed again too, and
       // then ends elsewhere: no estimate of a state Newton would find whether stable or not.
       const bool completed = summary.settings.count("status") != 0 && summary.settings.at("status") == "completed";
-      const bool follow_again = critical_points || !completed;
+      // Friction makes the state depend on the path to it: the enriched model follows it too.
+      const bool friction     = model.contact && model.contact->has_friction();
+      const bool follow_again = critical_points || !completed || friction;
       std::string how_solved;
       double      enriched_solve_seconds = 0;
       unsigned    enriched_newton        = 0;

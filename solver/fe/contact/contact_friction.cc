@@ -23,6 +23,7 @@ namespace compliant
   {
     node.anchor       = x - gap * n; // onto the surface
     node.anchor_load  = load_factor;
+    node.anchor_obstacle = -1; // set to the obstacle that holds it (update_active_set, start_step)
     node.slip         = false;
     node.normal_force = 0;
   }
@@ -34,7 +35,7 @@ namespace compliant
   }
 
   template <int dim>
-  void ContactSet<dim>::update_friction(Node &node, const Point<dim> &x, const double, const Tensor<1, dim> &n,
+  void ContactSet<dim>::update_friction(Node &node, const Point<dim> &x, const double gap, const Tensor<1, dim> &n,
                                         const PETScWrappers::MPI::Vector &residual, const double load_factor,
                                         const bool release, const double force_tolerance, Update &update) const
   {
@@ -63,7 +64,17 @@ namespace compliant
     node.slip_length = slid.norm();
     if (slid.norm() <= tolerance)
       return;
-    node.slip_direction = slid / slid.norm();
+    const Tensor<1, dim> direction = slid / slid.norm();
+    // Slid back against the friction that pushed it (near equilibrium): it sticks where it is.
+    if (release && direction * node.slip_direction < 0)
+      {
+        const int held = node.active;
+        stick_at(node, x, gap, n, load_factor);
+        node.anchor_obstacle = held;
+        ++update.changes;
+        return;
+      }
+    node.slip_direction = direction;
   }
 
   template <int dim>
@@ -78,6 +89,7 @@ namespace compliant
         Tensor<1, dim>   n;
         const double     gap = obstacles[node.active].gap(x, load_factor, n);
         stick_at(node, x, gap, n, load_factor);
+        node.anchor_obstacle = node.active;
       }
   }
 

@@ -211,16 +211,17 @@ namespace compliant
             {
               const unsigned int o = nearest(node, x, load_factor, gap, n);
               now                  = gap < -tolerance ? static_cast<int>(o) : -1;
-              // A node held at the step's start and freed by a Newton iterate on its way keeps
-              // that anchor (it did not land elsewhere); one that lands in the step sticks there.
-              if (now >= 0 && !node.step_anchor)
+              // A node sticking at the step's start and freed by a Newton iterate on its way
+              // keeps that anchor if it lands on the same obstacle (it did not land elsewhere);
+              // any other node that lands in the step sticks where it lands.
+              if (now >= 0 && !(node.step_anchor && !node.slip && node.anchor_obstacle == now))
                 stick_at(node, x, gap, n, load_factor);
-              else if (now >= 0)
-                node.slip = false;
             }
           update.changes += now != node.active;
           update.violation = std::max(update.violation, now >= 0 ? std::abs(gap) : -gap);
           node.active      = now;
+          if (now >= 0 && node.anchor_obstacle < 0)
+            node.anchor_obstacle = now;
         }
     update.changes   = Utilities::MPI::sum(update.changes, communicator);
     update.pulling   = Utilities::MPI::sum(update.pulling, communicator);

@@ -1,4 +1,4 @@
-// Frictionless contact of the part's boundary nodes with rigid obstacles, by a primal-dual active
+// Contact of the part's boundary nodes with rigid obstacles, by a primal-dual active
 // set (semismooth Newton; deal.II step-41 for a linear problem, here inside the finite-strain
 // Newton iteration). Each node of a contact boundary is either free or active, held on one
 // obstacle by the linearised constraint n . du = -gap (one multi-point constraint per node, on its
@@ -43,8 +43,9 @@ namespace compliant
     // Gathers the nodes of the obstacles' boundaries on this rank's cells (owned and ghost);
     // nodes on an `excluded` boundary (a rigid boundary: its nodes are already tied) are left
     // out. thickness: of a 2D model, for the nodes' areas; tolerance: fraction of the part's size.
-    // Nodes on a `supported` boundary (clamped, displaced, turned) touch without friction: the
-    // support holds them tangentially, and their reaction is the support's. Collective.
+    // Nodes on a `supported` boundary (clamped, displaced in every component, turned) touch
+    // without friction: the support holds them tangentially, and their reaction is the support's.
+    // Collective.
     ContactSet(std::vector<Obstacle<dim>> obstacles, const std::set<int> &excluded, const std::set<int> &supported,
                const dealii::DoFHandler<dim> &dofs, const dealii::Mapping<dim> &mapping,
                const dealii::Quadrature<dim - 1> &face_quadrature, const dealii::IndexSet &owned,
@@ -68,8 +69,8 @@ namespace compliant
                              double force_tolerance);
 
     // Adds the constraint of every active node on the correction du at state u:
-    // n . du = -gap (homogeneous: = 0), or a sticking node's du = its anchor - x in every
-    // component. Components already constrained are kept out; a node whose free components cannot
+    // n . du = -gap (homogeneous: = 0), or a sticking node's du = its anchor (moved with the
+    // obstacle since) - x in every component. Components already constrained are kept out; a node whose free components cannot
     // move along n is left free.
     void add_constraints(dealii::AffineConstraints<double> &constraints,
                          const dealii::PETScWrappers::MPI::Vector &u, double load_factor,
@@ -119,14 +120,22 @@ namespace compliant
 
     // Friction: a load step starts from its converged state (u, ghosted) with every held node
     // sticking where it is (the trial state of a return mapping); it slips within the step
-    // once the cone is exceeded, relative to there. Also after a failed step, from the saved state.
+    // once the cone is exceeded, relative to there.
     void start_step(const dealii::PETScWrappers::MPI::Vector &u, double load_factor);
+    // Friction: remembers every node's state (held or free, stick or slip, anchor) at a converged
+    // state, and returns to it after a failed or rejected step (a failed Newton leaves its own).
+    void save() { saved_nodes = nodes; }
+    void restore()
+    {
+      if (saved_nodes.size() == nodes.size())
+        nodes = saved_nodes;
+    }
 
     // Frees every node (a path restarted from rest).
     void release_all()
     {
       for (auto &node : nodes)
-        node.active = -1;
+        node.active = -1, node.slip = false, node.step_anchor = false;
     }
 
     const std::vector<Obstacle<dim>> obstacles;
@@ -148,10 +157,11 @@ namespace compliant
       bool                   slip = false;
       dealii::Point<dim>     anchor;
       double                 anchor_load = 0, normal_force = 0, slip_length = 0;
-      bool                   step_anchor = false; // anchored by start_step: kept if freed and held again
+      bool                   step_anchor = false; // anchored by start_step: kept if freed sticking and held again
+      int                    anchor_obstacle = -1; // the obstacle the anchor lies on
       dealii::Tensor<1, dim> slip_direction;
     };
-    std::vector<Node> nodes;
+    std::vector<Node> nodes, saved_nodes;
     // Whether a held node is under friction (its obstacle has some, and no support holds it).
     bool frictional(const Node &node) const
     {
@@ -172,7 +182,8 @@ namespace compliant
                           double load_factor) const;
     // Where a sticking node is held at the load factor.
     dealii::Point<dim> stick_target(const Node &node, double load_factor) const;
-    // A held node on an obstacle with friction: stick to slip, slip to stick, the normal force.
+    // A held node on an obstacle with friction: stick to slip, slip to stick (its slip reversed),
+    // the normal force.
     void update_friction(Node &node, const dealii::Point<dim> &x, double gap, const dealii::Tensor<1, dim> &n,
                          const dealii::PETScWrappers::MPI::Vector &residual, double load_factor, bool release,
                          double force_tolerance, Update &update) const;

@@ -104,20 +104,18 @@ namespace compliant
                                       parameters.solver_max_iterations, parameters.petsc_options};
         if (parameters.solver_method == SolverMethod::automatic && iterative)
           settings.max_iterations = std::min(settings.max_iterations, 300u);
+        // With error estimates, a degree-1 model's GAMG on hexahedra is kept: the enriched
+        // (degree-2) model's multigrid takes it as its degree-1 level instead of building its own.
+        const bool keep = parameters.error_estimates && fe->degree == 1 &&
+                          triangulation.all_reference_cells_are_hyper_cube();
+        PC         kept = nullptr;
         try
           {
-            // With error estimates, a degree-1 model's GAMG is kept: the enriched (degree-2) model's
-            // multigrid takes it as its degree-1 level instead of building its own.
-            const bool keep = parameters.error_estimates && fe->degree == 1;
-            PC         kept = nullptr;
             if (solver_method == SolverMethod::direct)
               statistics.iterations = solve_direct(x);
             else
               statistics.iterations = solve_linear_system(system_matrix, x, system_rhs, modes, settings, dim,
                                                           keep ? &kept : nullptr);
-            if (kept)
-              degree_one_level = fast_solver::degree_one_level_from_preconditioner<dim>(
-                dof_handler, kept, fast_solver::PMultigridSettings().coarse_tolerance, communicator);
           }
         catch (const std::runtime_error &e)
           {
@@ -129,6 +127,9 @@ namespace compliant
             solver_method         = SolverMethod::direct;
             statistics.iterations = solve_direct(x);
           }
+        if (kept) // outside the try: its errors are not CG's
+          degree_one_level = fast_solver::degree_one_level_from_preconditioner<dim>(
+            dof_handler, kept, fast_solver::PMultigridSettings().coarse_tolerance, communicator);
       }
     constraints.distribute(x);
     solution = x;
@@ -190,8 +191,6 @@ namespace compliant
     Solver &solver = *built;
     if (keep_solver_for_duals)
       kept_solver = built;
-    if (parameters.error_estimates)
-      multigrid = built;
     statistics.preconditioner_setup_seconds = reused ? 0. : solver.statistics().setup_seconds;
     statistics.level_dofs.assign(solver.statistics().level_dofs.begin(),
                                  solver.statistics().level_dofs.end());
@@ -212,8 +211,8 @@ namespace compliant
         statistics.initial_residual = solver.statistics().initial_residual;
         statistics.degree_one_reused = solver.statistics().coarse_reused;
         statistics.lower_multigrid_reused = solver.statistics().lower_reused;
-        if (parameters.error_estimates)
-          degree_one_level = solver.degree_one_level();
+        if (parameters.error_estimates) // kept once it has solved: the enriched model's levels below
+          degree_one_level = solver.degree_one_level(), multigrid = built;
         statistics.coarse_iterations = solver.statistics().coarse_iterations;
       }
     catch (const SolverControl::NoConvergence &e)

@@ -57,7 +57,8 @@ namespace compliant::fast_solver
     mutable unsigned int                       total_iterations = 0;
   };
 
-  // The degree-1 level as a whole: its matrix, its solver, and a fingerprint of its DoFs (sums of
+  // The degree-1 level as a whole: its matrix (empty where the solver came from another model's
+  // factor or preconditioner), its solver, and a fingerprint of its DoFs (sums of
   // the owned DoFs' indices times their vertices' coordinates). Kept after a solve, it serves a
   // second solver on the same mesh numbered the same way (the error estimates' degree-(p+1)
   // model), which then skips the degree-1 matrix and the AMG set-up.

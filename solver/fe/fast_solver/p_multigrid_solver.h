@@ -107,8 +107,9 @@ namespace compliant::fast_solver
     // the solver. lower: a solver one degree lower on the same mesh, numbered alike (the error
     // estimates' degree-p model for its degree-(p+1) twin). Its whole V-cycle then is this
     // solver's coarse solve, and only the finest level is built here: the levels below, their
-    // transfers, smoothers and degree-1 solver are the lower solver's. It must outlive this
-    // one and is not changed. A lower solver that does not fit (statistics say so) is ignored.
+    // transfers, smoothers and degree-1 solver are the lower solver's. It is held here and not
+    // changed; its DoFHandler, mapping and mesh must outlive this solver. A lower solver that
+    // does not fit (statistics say so) is ignored.
     PMultigridSolver(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &fine_dofs,
                      const LevelConstraints &level_constraints, const LevelSetup &level_setup,
                      const PMultigridSettings &settings, MPI_Comm communicator,

@@ -253,6 +253,9 @@ namespace compliant::fast_solver
   {
     auto              &L   = *levels;
     const unsigned int top = L.operators.max_level();
+    // The V-cycle's objects subscribe to the smoother and the coarse solver about to be replaced.
+    L.preconditioner.reset();
+    L.multigrid.reset();
     MGLevelObject<typename Levels::SmootherType::AdditionalData> smoother_data(0, top);
     for (unsigned int level = 0; level <= top; ++level)
       {

@@ -41,9 +41,9 @@ namespace compliant::fast_solver
     using Vectorized = dealii::VectorizedArray<Number>;
 
     // constraints must be homogeneous (hanging nodes, supports held at zero). The state starts
-    // undeformed and stress-free until set_state. hourglass_stiffness >= 0 on a level of degree
-    // >= 2: the tangent integrated with p Gauss points per direction plus that fraction of the
-    // fully integrated one, as the assembled residual and tangent with
+    // undeformed and stress-free until set_state. hourglass_stiffness e >= 0 on a level of degree
+    // >= 2: (1 - e) times the tangent integrated with p Gauss points per direction plus e times
+    // the fully integrated one, as the assembled residual and tangent with
     // discretization/reduced_integration.h's rule; negative or degree 1: p + 1 points.
     void reinit(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler,
                 const dealii::AffineConstraints<Number> &constraints, double hourglass_stiffness = -1);

@@ -33,7 +33,7 @@ namespace compliant
     void restore_state() override
     {
       problem.restore(saved, saved_load_factor);
-      problem.start_contact_step();
+      problem.restore_contact_state();
     }
     double change_from_saved_state() const override
     {

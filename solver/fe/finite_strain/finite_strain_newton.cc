@@ -230,7 +230,9 @@ namespace compliant
       }
     catch (const std::runtime_error &e)
       {
-        // solution is untouched: the converged state of the previous step remains
+        // solution is untouched: the converged state of the previous step remains, and so does
+        // its friction state (stick, slip, anchors) rather than the failed Newton's
+        restore_contact_state();
         throw StepFailure(e.what());
       }
     solution    = u;

@@ -222,6 +222,14 @@ namespace compliant
     PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
     ghosted = solution;
     contact->start_step(ghosted, load_factor);
+    contact->save();
+  }
+
+  template <int dim>
+  void FiniteStrainProblem<dim>::restore_contact_state()
+  {
+    if (contact && contact->has_friction())
+      contact->restore();
   }
 
   template <int dim>
@@ -237,8 +245,9 @@ namespace compliant
     std::set<int> supported_ids; // held by a support: no friction there (its reaction is the support's)
     for (const auto &[name, id] : boundary_conditions.clamped)
       supported_ids.insert(id);
-    for (const auto &d : boundary_conditions.displacements)
-      supported_ids.insert(d.boundary_id);
+    for (const auto &d : boundary_conditions.displacements) // a roller leaves friction its free directions
+      if (std::all_of(d.mask.begin(), d.mask.end(), [](const bool held) { return held; }))
+        supported_ids.insert(d.boundary_id);
     for (const auto &r : boundary_conditions.rotations)
       supported_ids.insert(r.boundary_id);
     contact = std::make_unique<ContactSet<dim>>(std::move(obstacles), rigid_ids, supported_ids, dof_handler, *mapping,

@@ -99,8 +99,11 @@ namespace compliant
       load_factor = state_load_factor;
     }
     // Contact with friction: the next load step starts with the held nodes sticking where the
-    // current (converged) state has them.
+    // current (converged) state has them; that contact state is saved.
     void start_contact_step();
+    // Contact with friction: back to the contact state saved by start_contact_step (after a
+    // failed Newton or a rejected step).
+    void restore_contact_state();
 
     // Negative eigenvalues of the condensed tangent stiffness at the current state (0: stable
     // equilibrium under the applied loads; a limit point or bifurcation has been passed

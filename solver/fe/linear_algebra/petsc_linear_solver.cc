@@ -5,6 +5,7 @@
 #include <petscksp.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace compliant
 {
@@ -100,7 +101,10 @@ namespace compliant
     PetscInt           iterations;
     KSPGetConvergedReason(ksp, &reason);
     KSPGetIterationNumber(ksp, &iterations);
-    if (kept_preconditioner && reason >= 0)
+    PCType type = nullptr;
+    PCGetType(pc, &type);
+    // Only GAMG is kept (PETSc options may have made it another, e.g. an unsymmetric SOR).
+    if (kept_preconditioner && reason >= 0 && type != nullptr && std::string(type) == PCGAMG)
       {
         check(PetscObjectReference(reinterpret_cast<PetscObject>(pc)), "PetscObjectReference");
         *kept_preconditioner = pc;
