@@ -155,6 +155,7 @@ COST_RUNS = [
     ("Lame sphere, P2 tetrahedra, refined once (MUMPS)", "lame_sphere.prm",
      [DEG(2), "Discretization/Global refinements=1", "Linear solver/Method=direct"]),
     ("3D cantilever, Q2, 8 x 8 x 24", "cantilever_3d_end_rotation.prm", [DEG(2)] + beam3d_mesh(8)),
+    ("3D cantilever, Q1, 16 x 16 x 48 (CG + GAMG)", "cantilever_3d_end_rotation.prm", [DEG(1)] + beam3d_mesh(16)),
 ]
 
 

@@ -103,7 +103,8 @@ namespace compliant
           if (!problem.reused_degree_one_level && primal->factorization && primal->fe->degree == 1 &&
               primal->solver_method == SolverMethod::direct)
             problem.reused_degree_one_level =
-              fast_solver::degree_one_level_from_factor<dim>(primal->dof_handler, primal->factorization,
+              fast_solver::degree_one_level_from_factor<dim>(primal->dof_handler, primal->homogeneous_constraints(),
+                                                             primal->factorization,
                                                              primal->communicator);
         };
         auto model = solve_linear_static_model<dim>(enriched_context, enriched, false, warm_start);

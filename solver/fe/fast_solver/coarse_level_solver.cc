@@ -117,6 +117,20 @@ namespace compliant::fast_solver
     VecRestoreArrayRead(correction, &values);
   }
 
+  namespace
+  {
+    template <int dim>
+    void keep_dofs(DegreeOneLevel &level, const dealii::DoFHandler<dim> &dofs,
+                   const dealii::AffineConstraints<double> &held_at_zero)
+    {
+      if constexpr (dim == 2)
+        level.dofs_2d = &dofs;
+      else
+        level.dofs_3d = &dofs;
+      level.constraints.copy_from(held_at_zero);
+    }
+  } // namespace
+
   template <int dim>
   std::vector<double> degree_one_fingerprint(const dealii::DoFHandler<dim> &dofs, MPI_Comm communicator)
   {
@@ -147,10 +161,12 @@ namespace compliant::fast_solver
 
   template <int dim>
   std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor(const dealii::DoFHandler<dim>             &dofs,
+                                                               const dealii::AffineConstraints<double>   &held_at_zero,
                                                                std::shared_ptr<const DirectFactorization> factor,
                                                                MPI_Comm communicator)
   {
     auto level         = std::make_shared<DegreeOneLevel>();
+    keep_dofs(*level, dofs, held_at_zero);
     level->owned       = dofs.locally_owned_dofs();
     level->solver      = std::make_unique<CoarseLevelSolver>(std::move(factor), level->owned, communicator);
     level->fingerprint = degree_one_fingerprint(dofs, communicator);
@@ -160,10 +176,12 @@ namespace compliant::fast_solver
 
   template <int dim>
   std::shared_ptr<DegreeOneLevel> degree_one_level_from_preconditioner(const dealii::DoFHandler<dim> &dofs,
+                                                                       const dealii::AffineConstraints<double> &held_at_zero,
                                                                        PC pc, const double relative_tolerance,
                                                                        MPI_Comm communicator)
   {
     auto level         = std::make_shared<DegreeOneLevel>();
+    keep_dofs(*level, dofs, held_at_zero);
     level->owned       = dofs.locally_owned_dofs();
     level->solver      = std::make_unique<CoarseLevelSolver>(pc, level->owned, relative_tolerance, communicator);
     level->fingerprint = degree_one_fingerprint(dofs, communicator);
@@ -187,13 +205,15 @@ namespace compliant::fast_solver
   template std::vector<double> degree_one_fingerprint<2>(const dealii::DoFHandler<2> &, MPI_Comm);
   template std::vector<double> degree_one_fingerprint<3>(const dealii::DoFHandler<3> &, MPI_Comm);
   template std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor<2>(
-    const dealii::DoFHandler<2> &, std::shared_ptr<const DirectFactorization>, MPI_Comm);
+    const dealii::DoFHandler<2> &, const dealii::AffineConstraints<double> &,
+    std::shared_ptr<const DirectFactorization>, MPI_Comm);
   template std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor<3>(
-    const dealii::DoFHandler<3> &, std::shared_ptr<const DirectFactorization>, MPI_Comm);
+    const dealii::DoFHandler<3> &, const dealii::AffineConstraints<double> &,
+    std::shared_ptr<const DirectFactorization>, MPI_Comm);
   template std::shared_ptr<DegreeOneLevel> degree_one_level_from_preconditioner<2>(
-    const dealii::DoFHandler<2> &, PC, double, MPI_Comm);
+    const dealii::DoFHandler<2> &, const dealii::AffineConstraints<double> &, PC, double, MPI_Comm);
   template std::shared_ptr<DegreeOneLevel> degree_one_level_from_preconditioner<3>(
-    const dealii::DoFHandler<3> &, PC, double, MPI_Comm);
+    const dealii::DoFHandler<3> &, const dealii::AffineConstraints<double> &, PC, double, MPI_Comm);
   template bool degree_one_level_fits<2>(const DegreeOneLevel &, const dealii::DoFHandler<2> &,
                                          const std::vector<double> &, MPI_Comm);
   template bool degree_one_level_fits<3>(const DegreeOneLevel &, const dealii::DoFHandler<3> &,

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
@@ -69,6 +70,21 @@ namespace compliant::fast_solver
     std::vector<double>                      fingerprint;
     dealii::IndexSet                         owned; // the degree-1 DoFs of this rank
     bool                                     direct = false;
+    // The degree-1 DoFs it was built on, and their constraints held at zero, where the model
+    // that built it keeps them (a degree-1 model): a degree-2 solver on a twin mesh takes them
+    // as its degree-1 level instead of distributing its own. The model must outlive the solvers
+    // built on them (the error estimates' enriched model lives inside the model's run).
+    const dealii::DoFHandler<2>      *dofs_2d = nullptr;
+    const dealii::DoFHandler<3>      *dofs_3d = nullptr;
+    dealii::AffineConstraints<double> constraints;
+    template <int dim>
+    const dealii::DoFHandler<dim> *dofs() const
+    {
+      if constexpr (dim == 2)
+        return dofs_2d;
+      else
+        return dofs_3d;
+    }
   };
 
   // Sums over the owned DoFs of (index + 1) times each coordinate of the DoF's vertex, and the
@@ -78,8 +94,10 @@ namespace compliant::fast_solver
 
   // The degree-1 level of a degree-1 model solved by MUMPS: its matrix's factor serves as the
   // exact coarse solve of the degree-2 model on the same mesh (the error estimates' enriched one).
+  // held_at_zero: the model's constraints without their values.
   template <int dim>
   std::shared_ptr<DegreeOneLevel> degree_one_level_from_factor(const dealii::DoFHandler<dim>             &dofs,
+                                                               const dealii::AffineConstraints<double>   &held_at_zero,
                                                                std::shared_ptr<const DirectFactorization> factor,
                                                                MPI_Comm communicator);
 
@@ -87,6 +105,7 @@ namespace compliant::fast_solver
   // taken over) serves the degree-2 model on the same mesh, by CG to relative_tolerance.
   template <int dim>
   std::shared_ptr<DegreeOneLevel> degree_one_level_from_preconditioner(const dealii::DoFHandler<dim> &dofs,
+                                                                       const dealii::AffineConstraints<double> &held_at_zero,
                                                                        PC set_up_preconditioner,
                                                                        double relative_tolerance,
                                                                        MPI_Comm communicator);

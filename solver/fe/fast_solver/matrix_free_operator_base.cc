@@ -46,6 +46,24 @@ namespace compliant::fast_solver
   }
 
   template <int dim, typename Number>
+  void MatrixFreeOperatorBase<dim, Number>::reinit_layout(const Mapping<dim>              &mapping_in,
+                                                          const DoFHandler<dim>           &dof_handler,
+                                                          const AffineConstraints<Number> &constraints_in)
+  {
+    fe_degree   = dof_handler.get_fe().degree;
+    constraints = &constraints_in;
+    mapping     = &mapping_in;
+    constrained_local_dofs.clear();
+    typename MatrixFree<dim, Number>::AdditionalData additional_data;
+    additional_data.tasks_parallel_scheme = MatrixFree<dim, Number>::AdditionalData::none;
+    additional_data.initialize_mapping    = false;
+    data = std::make_shared<MatrixFree<dim, Number>>();
+    data->reinit(mapping_in, std::vector<const DoFHandler<dim> *>{&dof_handler},
+                 std::vector<const AffineConstraints<Number> *>{&constraints_in},
+                 std::vector<Quadrature<1>>{QGauss<1>(fe_degree + 1)}, additional_data);
+  }
+
+  template <int dim, typename Number>
   void MatrixFreeOperatorBase<dim, Number>::vmult(VectorType &dst, const VectorType &src) const
   {
     apply_cells(dst, src, false);

@@ -40,6 +40,10 @@ namespace compliant::fast_solver
     void apply_to_lifting(VectorType &dst, const VectorType &src) const;
 
     void initialize_dof_vector(VectorType &vector) const;
+    // The DoF layout alone (initialize_dof_vector), no geometry: for a level that is never
+    // applied (the p-multigrid's degree-1 level when another solver's coarse solve serves it).
+    void reinit_layout(const dealii::Mapping<dim> &mapping, const dealii::DoFHandler<dim> &dof_handler,
+                       const dealii::AffineConstraints<Number> &constraints);
     // Non-positive entries (a tangent past a limit point) are left unscaled.
     void compute_inverse_diagonal(VectorType &inverse_diagonal) const;
     // The assembled matrix with unit diagonal on constrained rows (for the coarse level).

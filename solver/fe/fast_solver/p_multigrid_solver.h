@@ -51,11 +51,19 @@ namespace compliant::fast_solver
     // AMG: 0 = one V-cycle; > 0 = CG + AMG to this residual reduction, and the outer CG becomes
     // flexible (the preconditioner then varies from one application to the next).
     double       coarse_tolerance   = 0.03;
+    // The same for a degree-1 level kept for a warm-started solve (the error estimates' enriched
+    // model over a degree-1 model's GAMG): that solve reduces its residual by 1e-4 in about three
+    // V-cycles, and a looser inner solve keeps them at three. Lame cylinder, Q1 128 x 256, 2 ranks:
+    // 0.03, 0.1, 0.3 gave 3 V-cycles and enriched solves of 0.203, 0.192, 0.187 s (one V-cycle,
+    // 0: 4 and 0.207 s), estimates equal to 0.14 %.
+    double       warm_start_coarse_tolerance = 0.3;
     // CG iterations that estimate each level's largest eigenvalue for Chebyshev. A warm-started
     // solve (a few iterations) takes 8: on the error estimates' enriched models 15 and 8 gave the
     // same iterations and estimates, 8 saved 0.02 s of 0.24 s (3D Q3, 137k DoFs).
     unsigned int eigenvalue_iterations = 15;
     std::string  petsc_options;           // passed to the coarse GAMG
+    // Level transfers: false takes deal.II's on every level (fast_solver/level_transfer.h).
+    bool         cell_wise_transfer = true;
     // Another solver's degree-1 level on the same mesh: used instead of building one when its
     // DoFs' fingerprint matches this mesh's (else built as usual, and statistics say so).
     std::shared_ptr<DegreeOneLevel> reused_degree_one_level;
@@ -92,8 +100,9 @@ namespace compliant::fast_solver
   class PMultigridSolver
   {
   public:
-    // Fills the homogeneous constraints of a level (hanging nodes, supports held at zero); the
-    // object comes cleared and is closed by the caller.
+    // Fills the homogeneous constraints of a level (hanging nodes, supports held at zero) with
+    // their index set (the level's locally relevant DoFs); the object comes empty and is closed
+    // by the caller.
     using LevelConstraints =
       std::function<void(const dealii::DoFHandler<dim> &, dealii::AffineConstraints<double> &)>;
     // Sets up a level's operator (reinit with the problem's coefficients or state).
@@ -149,6 +158,8 @@ namespace compliant::fast_solver
     // Levels 0 (the lower solver's finest) and 1 (fine_dofs); false if lower does not fit.
     bool build_on_lower(const dealii::DoFHandler<dim> &fine_dofs, const LevelConstraints &level_constraints,
                         const LevelSetup &level_setup, std::shared_ptr<const PMultigridSolver> lower);
+    // The transfers between the levels (fast_solver/level_transfer.h).
+    void build_transfer();
     // The V-cycle's objects over the current levels, smoother and coarse solve.
     void build_preconditioner();
 

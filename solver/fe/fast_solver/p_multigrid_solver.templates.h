@@ -16,7 +16,6 @@
 #include <deal.II/multigrid/mg_coarse.h>
 #include <deal.II/multigrid/mg_matrix.h>
 #include <deal.II/multigrid/mg_smoother.h>
-#include <deal.II/multigrid/mg_transfer_global_coarsening.h>
 #include <deal.II/multigrid/multigrid.h>
 
 #include <algorithm>
@@ -24,6 +23,7 @@
 #include <stdexcept>
 
 #include "fast_solver/coarse_level_solver.h"
+#include "fast_solver/level_transfer.h"
 #include "mesh/cell_aspect_ratio.h"
 #include "linear_algebra/rigid_body_modes.h"
 
@@ -37,7 +37,7 @@ namespace compliant::fast_solver
     using VectorType     = LinearAlgebra::distributed::Vector<double>;
     using Operator       = Operator_;
     using SmootherType   = PreconditionChebyshev<Operator, VectorType, DiagonalMatrix<VectorType>>;
-    using TransferType   = MGTransferGlobalCoarsening<dim, VectorType>;
+    using TransferType   = LevelTransfer<dim>;
 
     // A lower solver's V-cycle as the coarse solve of the level above it.
     struct LowerCycle : public MGCoarseGridBase<VectorType>
@@ -56,7 +56,6 @@ namespace compliant::fast_solver
     MGLevelObject<const DoFHandler<dim> *>         dofs;
     MGLevelObject<AffineConstraints<double>>       constraints;
     MGLevelObject<std::shared_ptr<Operator>>       operators;
-    MGLevelObject<MGTwoLevelTransfer<dim, VectorType>> two_level_transfers;
     std::unique_ptr<TransferType>                  transfer;
     std::shared_ptr<DegreeOneLevel>                coarse;
     LowerCycle                                     lower_cycle; // its `lower` set: the coarse solve
@@ -103,6 +102,26 @@ namespace compliant::fast_solver
       sums.push_back(dofs.n_dofs());
       return sums;
     }
+
+    // Whether two triangulations are twins with the same cells on this rank as on every other:
+    // the sums over the locally owned cells of (index + 1) times each coordinate of the centre.
+    template <int dim>
+    bool same_owned_cells(const Triangulation<dim> &a, const Triangulation<dim> &b, MPI_Comm communicator)
+    {
+      const auto sums = [](const Triangulation<dim> &mesh) {
+        std::vector<double> s(dim + 1, 0.);
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                s[d] += (cell->active_cell_index() + 1.) * cell->center()[d];
+              s[dim] += 1;
+            }
+        return s;
+      };
+      const bool same = a.n_active_cells() == b.n_active_cells() && sums(a) == sums(b);
+      return Utilities::MPI::min(same ? 1 : 0, communicator) == 1;
+    }
   } // namespace
 
 
@@ -132,13 +151,24 @@ namespace compliant::fast_solver
     L.dofs.resize(0, top);
     L.constraints.resize(0, top);
     L.operators.resize(0, top);
-    L.two_level_transfers.resize(0, top);
     L.mapping = &mapping;
 
+    // A reused degree-1 level kept with its DoFs (a degree-1 model on a twin mesh) is level 0 as it is.
+    const auto &reused     = settings.reused_degree_one_level;
+    const auto *kept_dofs  = reused && top == 1 ? reused->template dofs<dim>() : nullptr;
+    const bool  take_kept  = kept_dofs && same_owned_cells(kept_dofs->get_triangulation(),
+                                                           fine_dofs.get_triangulation(), communicator);
     for (unsigned int level = 0; level <= top; ++level)
       {
         if (level == top)
           L.dofs[level] = &fine_dofs;
+        else if (take_kept)
+          {
+            L.dofs[level] = kept_dofs;
+            L.constraints[level].copy_from(reused->constraints);
+            stats.level_dofs.push_back(kept_dofs->n_dofs());
+            continue;
+          }
         else
           {
             L.coarse_elements.push_back(std::make_unique<FESystem<dim>>(FE_Q<dim>(level + 1), dim));
@@ -146,24 +176,23 @@ namespace compliant::fast_solver
             L.coarse_dofs.back()->distribute_dofs(*L.coarse_elements.back());
             L.dofs[level] = L.coarse_dofs.back().get();
           }
-        IndexSet relevant;
-        DoFTools::extract_locally_relevant_dofs(*L.dofs[level], relevant);
-        L.constraints[level].reinit(relevant);
         level_constraints(*L.dofs[level], L.constraints[level]);
         L.constraints[level].close();
-        L.operators[level] = std::make_shared<typename Levels::Operator>();
-        level_setup(*L.operators[level], mapping, *L.dofs[level], L.constraints[level]);
         stats.level_dofs.push_back(L.dofs[level]->n_dofs());
       }
 
-    for (unsigned int level = 1; level <= top; ++level)
-      L.two_level_transfers[level].reinit_polynomial_transfer(*L.dofs[level], *L.dofs[level - 1],
-                                                              L.constraints[level],
-                                                              L.constraints[level - 1]);
-    L.transfer = std::make_unique<typename Levels::TransferType>(
-      L.two_level_transfers, [&L](const unsigned int level, typename Levels::VectorType &vector) {
-        L.operators[level]->initialize_dof_vector(vector);
-      });
+    const auto fingerprint = take_kept ? std::vector<double>() : degree_one_fingerprint(*L.dofs[0], communicator);
+    stats.coarse_reused    = take_kept || (reused && degree_one_level_fits(*reused, *L.dofs[0], fingerprint, communicator));
+    for (unsigned int level = 0; level <= top; ++level)
+      {
+        L.operators[level] = std::make_shared<typename Levels::Operator>();
+        // A reused degree-1 level is solved without this level's operator: its vectors' layout only.
+        if (level == 0 && stats.coarse_reused && top > 0)
+          L.operators[level]->reinit_layout(mapping, *L.dofs[level], L.constraints[level]);
+        else
+          level_setup(*L.operators[level], mapping, *L.dofs[level], L.constraints[level]);
+      }
+    build_transfer();
 
     stats.largest_aspect_ratio = largest_cell_aspect_ratio(fine_dofs.get_triangulation(), communicator);
     const double a             = stats.largest_aspect_ratio;
@@ -176,10 +205,6 @@ namespace compliant::fast_solver
                           (settings.coarse == PMultigridSettings::Coarse::automatic && a > 3 &&
                            L.dofs[0]->n_dofs() <= (dim == 3 ? settings.direct_coarse_limit_3d :
                                                                   settings.direct_coarse_limit));
-
-    const auto fingerprint = degree_one_fingerprint(*L.dofs[0], communicator);
-    const auto &reused     = settings.reused_degree_one_level;
-    stats.coarse_reused    = reused && degree_one_level_fits(*reused, *L.dofs[0], fingerprint, communicator);
     if (stats.coarse_reused)
       L.coarse = reused, stats.coarse_direct = reused->direct;
     else
@@ -210,24 +235,16 @@ namespace compliant::fast_solver
     L.dofs.resize(0, 1);
     L.constraints.resize(0, 1);
     L.operators.resize(0, 1);
-    L.two_level_transfers.resize(0, 1);
     L.dofs[0] = &lower_dofs;
     L.dofs[1] = &fine_dofs;
     L.constraints[0].copy_from(lower_L.constraints[lower_L.constraints.max_level()]);
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(fine_dofs, relevant);
-    L.constraints[1].reinit(relevant);
     level_constraints(fine_dofs, L.constraints[1]);
     L.constraints[1].close();
     L.operators[0] = lower_L.operators[lower_L.operators.max_level()];
     L.operators[1] = std::make_shared<typename Levels::Operator>();
     level_setup(*L.operators[1], *L.mapping, fine_dofs, L.constraints[1]);
-    // The transfer maps cells by their ids: it works across the twin triangulations.
-    L.two_level_transfers[1].reinit_polynomial_transfer(fine_dofs, lower_dofs, L.constraints[1], L.constraints[0]);
-    L.transfer = std::make_unique<typename Levels::TransferType>(
-      L.two_level_transfers, [&L](const unsigned int level, typename Levels::VectorType &vector) {
-        L.operators[level]->initialize_dof_vector(vector);
-      });
+    // Twin triangulations have their cells in the same order: the transfer works across them.
+    build_transfer();
     L.lower_cycle.lower = std::move(lower);
 
     const auto &below          = L.lower_cycle.lower->stats;
@@ -240,6 +257,16 @@ namespace compliant::fast_solver
     stats.level_dofs           = below.level_dofs;
     stats.level_dofs.push_back(fine_dofs.n_dofs());
     return true;
+  }
+
+  template <int dim, typename Operator>
+  void PMultigridSolver<dim, Operator>::build_transfer()
+  {
+    auto &L    = *levels;
+    L.transfer = std::make_unique<typename Levels::TransferType>(
+      L.dofs, L.constraints, [&L](const unsigned int level, typename Levels::VectorType &vector) {
+        L.operators[level]->initialize_dof_vector(vector);
+      }, settings.cell_wise_transfer);
   }
 
   template <int dim, typename Operator>
@@ -314,7 +341,7 @@ namespace compliant::fast_solver
   {
     Timer timer;
     auto &L = *levels;
-    if (L.lower_cycle.lower)
+    if (L.lower_cycle.lower || (stats.coarse_reused && L.operators.max_level() > 0))
       throw std::logic_error("PMultigridSolver::update: the levels below are another solver's");
     for (unsigned int level = L.operators.min_level(); level <= L.operators.max_level(); ++level)
       change(*L.operators[level]);

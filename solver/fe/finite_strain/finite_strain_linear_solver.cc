@@ -136,6 +136,9 @@ namespace compliant
         tangent_multigrid = std::make_unique<TangentMultigrid>(
           *mapping, dof_handler,
           [this](const DoFHandler<dim> &dofs, AffineConstraints<double> &level_constraints) {
+            IndexSet relevant;
+            DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+            level_constraints.reinit(relevant);
             add_level_constraints(dofs, level_constraints);
           },
           [&](Operator &level_operator, const Mapping<dim> &level_mapping, const DoFHandler<dim> &dofs,
