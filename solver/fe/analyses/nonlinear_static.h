@@ -26,9 +26,9 @@ namespace compliant
   PathSettings read_path_settings(dealii::ParameterHandler &prm, const CaseParameters &p, int dim);
 
   // Sees the summary (quantities of the last converged step) before it is written, with the
-  // problem at that state, and may add to it.
+  // problem at that state, and may add to it (and mark the problem's cells for refinement).
   template <int dim>
-  using SummaryAmendment = std::function<void(RunSummary &, const FiniteStrainProblem<dim> &)>;
+  using SummaryAmendment = std::function<void(RunSummary &, FiniteStrainProblem<dim> &)>;
 
   // The analysis itself, for the model ladder's finite-strain rungs and the error estimates.
   // start_from, if given, is a converged problem of the same case on the same mesh at a lower

@@ -7,6 +7,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include "fast_solver/tangent_operator.h"
+#include "linear_algebra/direct_factorization.h"
 #include "linear_algebra/petsc_linear_solver.h"
 
 namespace compliant
@@ -113,6 +114,52 @@ namespace compliant
     return difference.l2_norm() / Kv.l2_norm();
   }
 
+  template <int dim>
+  PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::tangent_times(const PETScWrappers::MPI::Vector &psi,
+                                                                     const AffineConstraints<double> &homogeneous) const
+  {
+    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+    PETScWrappers::MPI::Vector state(locally_owned_dofs, communicator), plus(state), minus(state);
+    // A step small against the state's displacements and the mesh (central differences: error h^2).
+    const double scale = std::max(solution.linfty_norm(), 1e-3 * triangulation.begin_active()->diameter());
+    const double h     = 1e-6 * scale / std::max(psi.linfty_norm(), 1e-300);
+    state              = solution;
+    state.add(h, psi);
+    ghosted = state;
+    assemble(ghosted, load_factor, &hanging_node_constraints, false, plus);
+    state.add(-2 * h, psi);
+    ghosted = state;
+    assemble(ghosted, load_factor, &hanging_node_constraints, false, minus);
+    // assemble gives f_ext - f_int: K_T psi = (minus - plus) / 2h
+    PETScWrappers::MPI::Vector product = minus;
+    product.add(-1, plus);
+    product /= 2 * h;
+    for (const auto i : locally_owned_dofs)
+      if (homogeneous.is_constrained(i))
+        product(i) = 0;
+    product.compress(VectorOperation::insert);
+    return product;
+  }
+
+  template <int dim>
+  PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::solve_tangent_dual(PETScWrappers::MPI::Vector j) const
+  {
+    AffineConstraints<double> homogeneous;
+    assemble_tangent(homogeneous);
+    for (const auto i : locally_owned_dofs)
+      if (homogeneous.is_constrained(i))
+        j(i) = 0;
+    j.compress(VectorOperation::insert);
+    DirectFactorization factor;
+    factor.factor(tangent, false);
+    PETScWrappers::MPI::Vector z(locally_owned_dofs, communicator);
+    factor.solve(z, j);
+    homogeneous.distribute(z);
+    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+    ghosted = z;
+    return ghosted;
+  }
+
 #define INSTANTIATE(dim)                                                                                       \
   template const PETScWrappers::MPI::SparseMatrix &FiniteStrainProblem<dim>::assemble_tangent(                 \
     AffineConstraints<double> &) const;                                                                        \
@@ -120,7 +167,10 @@ namespace compliant
   template double                     FiniteStrainProblem<dim>::tangent_consistency(                           \
     const PETScWrappers::MPI::Vector &, const PETScWrappers::MPI::Vector &, double, double) const;             \
   template PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::tangent_action(                                \
-    const PETScWrappers::MPI::Vector &, const PETScWrappers::MPI::Vector &, double, bool) const;
+    const PETScWrappers::MPI::Vector &, const PETScWrappers::MPI::Vector &, double, bool) const;              \
+  template PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::tangent_times(                                 \
+    const PETScWrappers::MPI::Vector &, const AffineConstraints<double> &) const;                              \
+  template PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::solve_tangent_dual(PETScWrappers::MPI::Vector) const;
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

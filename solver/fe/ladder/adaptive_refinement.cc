@@ -11,6 +11,7 @@
 #include "quantities/goal_functionals.h"
 
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <sstream>
 #include <map>
@@ -24,7 +25,7 @@ namespace compliant
 
     // Kelly's indicator of a field of this problem's DoFs, on every cell on every rank.
     template <int dim>
-    Vector<float> kelly_indicators(const LinearElasticProblem<dim> &problem, const PETScWrappers::MPI::Vector &field)
+    Vector<float> kelly_indicators(const Discretization<dim> &problem, const PETScWrappers::MPI::Vector &field)
     {
       const auto    &triangulation = problem.triangulation;
       Vector<float>  indicators(triangulation.n_active_cells());
@@ -41,7 +42,7 @@ namespace compliant
     }
 
     template <int dim>
-    std::vector<bool> flags_from(LinearElasticProblem<dim> &problem, const Vector<float> &indicators,
+    std::vector<bool> flags_from(Discretization<dim> &problem, const Vector<float> &indicators,
                                  const double cell_fraction)
     {
       auto &triangulation = problem.triangulation;
@@ -102,82 +103,190 @@ namespace compliant
   } // namespace
 
   template <int dim>
-  std::vector<bool> kelly_refine_flags(LinearElasticProblem<dim> &problem, const double cell_fraction)
+  std::vector<bool> kelly_refine_flags(Discretization<dim> &problem, const PETScWrappers::MPI::Vector &solution,
+                                       const double cell_fraction)
   {
-    return flags_from(problem, kelly_indicators(problem, problem.solution), cell_fraction);
+    return flags_from(problem, kelly_indicators(problem, solution), cell_fraction);
   }
 
-  // One dual per target: the right-hand sides of its parts combined by the target's linearization,
-  // so that a derived target's dual sees where the errors of its parts cancel (J = M / (G theta')
-  // of a bar in torsion depends on the section between the measuring points only).
+  namespace
+  {
+    // How one model's duals are found: the functionals from a linear model of the same mesh
+    // (numbered alike), a reaction's right-hand side from its lifting psi, the dual solve, and
+    // which functionals hold on this model (at finite strain a small-strain stress does not).
+    template <int dim>
+    struct DualModel
+    {
+      Discretization<dim>                    &model; // whose solution and mesh the indicators read
+      const PETScWrappers::MPI::Vector       &solution;
+      const LinearElasticProblem<dim>        &functionals;
+      std::function<bool(const std::string &)> holds;
+      std::function<PETScWrappers::MPI::Vector(const PETScWrappers::MPI::Vector &psi,
+                                               const PETScWrappers::MPI::Vector &linear_j)>
+                                                                                       reaction_rhs;
+      std::function<PETScWrappers::MPI::Vector(const PETScWrappers::MPI::Vector &rhs)> solve;
+      double                                                                           primal_seconds;
+    };
+
+    // One dual per target: the right-hand sides of its parts combined by the target's
+    // linearization, so that a derived target's dual sees where the errors of its parts cancel
+    // (J = M / (G theta') of a bar in torsion depends on the section between the measuring points
+    // only).
+    template <int dim>
+    std::vector<bool> dual_weighted_flags(const DualModel<dim> &m, const std::vector<std::string> &targets,
+                                          const Quantities &values, const std::string &derived,
+                                          const double cell_fraction, std::string &how)
+    {
+      const Vector<float> primal = kelly_indicators(m.model, m.solution);
+      // Energy-like goals: ||e||_K^2 relative to a(u, u) = 2 U.
+      const double  energy = 2 * std::abs(values.count("strain_energy") ? values.at("strain_energy") : 1.0);
+      Vector<float> energy_density = primal;
+      energy_density.scale(primal);
+      Vector<float> indicators(energy_density.size());
+      const auto    homogeneous = m.functionals.homogeneous_constraints();
+      const auto   &owned       = m.functionals.locally_owned_dofs;
+      const auto    comm        = m.functionals.communicator;
+      how.clear();
+      for (const auto &target : targets)
+        {
+          std::string                used;
+          PETScWrappers::MPI::Vector rhs(owned, comm), liftings(owned, comm);
+          bool                       has_dual     = false;
+          double                     dual_seconds = 0;
+          for (const auto &[q, c] : linearization(target, values, derived, m.functionals.expression_variables()))
+            {
+              PETScWrappers::MPI::Vector j, lifting;
+              const bool linear = m.holds(q) && assemble_goal_functional(m.functionals, q, values, homogeneous, j, lifting);
+              if (linear)
+                {
+                  if (lifting.size() > 0)
+                    j = m.reaction_rhs(lifting, j);
+                  // A mollified point value is not the point value (a bump cut by the part's faces
+                  // averages a smaller lever): scaled to it, so that parts which cancel in the
+                  // target still cancel in its dual.
+                  const double mollified = lifting.size() == 0 ? j * m.solution : 0.0;
+                  const double value     = values.count(q) ? values.at(q) : 0.0;
+                  if (mollified != 0 && value / mollified > 0.1 && value / mollified < 10)
+                    j *= value / mollified;
+                  rhs.add(c, j);
+                  if (lifting.size() > 0)
+                    liftings.add(c, lifting);
+                  has_dual = true;
+                }
+              else
+                indicators.add(std::abs(c * (values.count(q) ? values.at(q) : 1.0)) / energy, energy_density);
+              used += (used.empty() ? "" : ", ") + q +
+                      (linear ? (lifting.size() > 0 ? " (reaction)" : "") : " (energy-like)");
+            }
+          if (has_dual)
+            {
+              // The dual's error is carried by z minus the reactions' liftings (goal_functionals.h).
+              Timer                      dual_timer;
+              PETScWrappers::MPI::Vector z = m.solve(rhs), dual_error(rhs);
+              dual_seconds                 = dual_timer.wall_time();
+              dual_error                   = z;
+              dual_error.add(-1.0, liftings);
+              z                        = dual_error;
+              const Vector<float> dual = kelly_indicators(m.model, z);
+              for (unsigned int k = 0; k < indicators.size(); ++k)
+                indicators[k] += primal[k] * dual[k];
+            }
+          std::ostringstream cost;
+          if (has_dual)
+            cost << ", one dual (solved in " << std::setprecision(2) << dual_seconds << " s, the primal in "
+                 << m.primal_seconds << " s)";
+          how += (how.empty() ? "" : "; ") + target + ": " + used + cost.str();
+        }
+      return flags_from(m.model, indicators, cell_fraction);
+    }
+
+    // Whether two models of one mesh number their DoFs alike (each rank: the same owned DoFs, and
+    // the sums of the DoF indices times their cells' centres agree).
+    template <int dim>
+    bool numbered_alike(const Discretization<dim> &a, const Discretization<dim> &b)
+    {
+      const auto sums = [](const Discretization<dim> &d) {
+        std::vector<double>                  s(dim, 0.);
+        std::vector<types::global_dof_index> indices(d.fe->n_dofs_per_cell());
+        for (const auto &cell : d.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(indices);
+              for (unsigned int i = 0; i < indices.size(); ++i)
+                for (unsigned int k = 0; k < dim; ++k)
+                  s[k] += (indices[i] + 1.) * (i + 1.) * cell->center()[k];
+            }
+        return s;
+      };
+      const bool alike = a.dof_handler.n_dofs() == b.dof_handler.n_dofs() &&
+                         a.locally_owned_dofs == b.locally_owned_dofs && sums(a) == sums(b);
+      return Utilities::MPI::min(alike ? 1 : 0, a.communicator) == 1;
+    }
+  } // namespace
+
   template <int dim>
   std::vector<bool> goal_oriented_refine_flags(LinearElasticProblem<dim> &problem,
                                                const std::vector<std::string> &targets, const Quantities &values,
                                                const std::string &derived, const double cell_fraction, std::string &how)
   {
-    const Vector<float> primal = kelly_indicators(problem, problem.solution);
-    // Energy-like goals: ||e||_K^2 relative to a(u, u) = 2 U.
-    const double energy = 2 * std::abs(values.count("strain_energy") ? values.at("strain_energy") : 1.0);
-    Vector<float> energy_density = primal;
-    energy_density.scale(primal);
-    Vector<float> indicators(energy_density.size());
-    const auto    homogeneous = problem.homogeneous_constraints();
-    how.clear();
-    for (const auto &target : targets)
-      {
-        std::string                used;
-        PETScWrappers::MPI::Vector rhs(problem.locally_owned_dofs, problem.communicator);
-        PETScWrappers::MPI::Vector liftings(problem.locally_owned_dofs, problem.communicator);
-        bool                       has_dual = false;
-        double                     dual_seconds = 0;
-        for (const auto &[q, c] : linearization(target, values, derived, problem.expression_variables()))
-          {
-            PETScWrappers::MPI::Vector j, lifting;
-            const bool linear = assemble_goal_functional(problem, q, values, homogeneous, j, lifting);
-            if (linear)
-              {
-                // A mollified point value is not the point value (a bump cut by the part's faces
-                // averages a smaller lever): scaled to it, so that parts which cancel in the
-                // target still cancel in its dual.
-                const double mollified = lifting.size() == 0 ? j * problem.solution : 0.0;
-                const double value     = values.count(q) ? values.at(q) : 0.0;
-                if (mollified != 0 && value / mollified > 0.1 && value / mollified < 10)
-                  j *= value / mollified;
-                rhs.add(c, j);
-                if (lifting.size() > 0)
-                  liftings.add(c, lifting);
-                has_dual = true;
-              }
-            else
-              indicators.add(std::abs(c * (values.count(q) ? values.at(q) : 1.0)) / energy, energy_density);
-            used += (used.empty() ? "" : ", ") + q + (linear ? (lifting.size() > 0 ? " (reaction)" : "") : " (energy-like)");
-          }
-        if (has_dual)
-          {
-            // The dual's error is carried by z minus the reactions' liftings (goal_functionals.h).
-            Timer                      dual_timer;
-            PETScWrappers::MPI::Vector z = problem.solve_dual(rhs), dual_error(rhs);
-            dual_seconds                 = dual_timer.wall_time();
-            dual_error = z;
-            dual_error.add(-1.0, liftings);
-            z = dual_error;
-            const Vector<float> dual = kelly_indicators(problem, z);
-            for (unsigned int k = 0; k < indicators.size(); ++k)
-              indicators[k] += primal[k] * dual[k];
-          }
-        std::ostringstream cost;
-        if (has_dual)
-          cost << ", one dual (solved in " << std::setprecision(2) << dual_seconds << " s, the primal in "
-               << problem.statistics.solve_seconds << " s)";
-        how += (how.empty() ? "" : "; ") + target + ": " + used + cost.str();
-      }
-    return flags_from(problem, indicators, cell_fraction);
+    const DualModel<dim> model{problem,
+                               problem.solution,
+                               problem,
+                               [](const std::string &) { return true; },
+                               [](const PETScWrappers::MPI::Vector &, const PETScWrappers::MPI::Vector &j) { return j; },
+                               [&](const PETScWrappers::MPI::Vector &rhs) { return problem.solve_dual(rhs); },
+                               problem.statistics.solve_seconds};
+    return dual_weighted_flags(model, targets, values, derived, cell_fraction, how);
   }
 
-  template std::vector<bool> kelly_refine_flags<2>(LinearElasticProblem<2> &, double);
-  template std::vector<bool> kelly_refine_flags<3>(LinearElasticProblem<3> &, double);
+  template <int dim>
+  std::vector<bool> finite_strain_refine_flags(FiniteStrainProblem<dim> &problem,
+                                               const std::vector<std::string> &targets, const Quantities &values,
+                                               const std::string &derived, const double cell_fraction, std::string &how)
+  {
+    // The functionals come from a linear model of the same case and mesh; its DoFs must be numbered alike.
+    CaseParameters linear = problem.parameters;
+    linear.analysis       = "linear static";
+    LinearElasticProblem<dim> twin(linear, problem.geometry, problem.communicator, problem.mesh_partition);
+    std::string               why_not;
+    try
+      {
+        twin.setup();
+        if (!numbered_alike<dim>(twin, problem))
+          why_not = "a linear model of this mesh numbers its DoFs otherwise";
+      }
+    catch (const std::exception &e)
+      {
+        why_not = std::string("no linear model of this case: ") + e.what();
+      }
+    if (!why_not.empty())
+      {
+        how = "Kelly's indicator (" + why_not + ": no functionals for the duals)";
+        return flags_from(problem, kelly_indicators(problem, problem.solution), cell_fraction);
+      }
+    const AffineConstraints<double> homogeneous = twin.homogeneous_constraints();
+    const DualModel<dim> model{
+      problem,
+      problem.solution,
+      twin,
+      // Small-strain stresses are not the finite-strain ones: those targets are energy-like here.
+      [](const std::string &q) { return q.rfind("stress_", 0) != 0 && q.rfind("von_mises_", 0) != 0; },
+      [&](const PETScWrappers::MPI::Vector &psi, const PETScWrappers::MPI::Vector &) {
+        return problem.tangent_times(psi, homogeneous);
+      },
+      [&](const PETScWrappers::MPI::Vector &rhs) { return problem.solve_tangent_dual(rhs); },
+      problem.linear_solve_seconds};
+    return dual_weighted_flags(model, targets, values, derived, cell_fraction, how);
+  }
+
+  template std::vector<bool> kelly_refine_flags<2>(Discretization<2> &, const PETScWrappers::MPI::Vector &, double);
+  template std::vector<bool> kelly_refine_flags<3>(Discretization<3> &, const PETScWrappers::MPI::Vector &, double);
   template std::vector<bool> goal_oriented_refine_flags<2>(LinearElasticProblem<2> &, const std::vector<std::string> &,
                                                            const Quantities &, const std::string &, double, std::string &);
   template std::vector<bool> goal_oriented_refine_flags<3>(LinearElasticProblem<3> &, const std::vector<std::string> &,
+                                                           const Quantities &, const std::string &, double, std::string &);
+  template std::vector<bool> finite_strain_refine_flags<2>(FiniteStrainProblem<2> &, const std::vector<std::string> &,
+                                                           const Quantities &, const std::string &, double, std::string &);
+  template std::vector<bool> finite_strain_refine_flags<3>(FiniteStrainProblem<3> &, const std::vector<std::string> &,
                                                            const Quantities &, const std::string &, double, std::string &);
 } // namespace compliant

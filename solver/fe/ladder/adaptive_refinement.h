@@ -15,6 +15,7 @@
 #pragma once
 
 #include "elasticity/linear_elastic_problem.h"
+#include "finite_strain/finite_strain_problem.h"
 #include "quantities/quantities.h"
 
 #include <string>
@@ -26,13 +27,24 @@ namespace compliant
   // indicators make up the given fraction of cells, largest first; the level difference across
   // faces stays at most one (prepare_coarsening_and_refinement).
   template <int dim>
-  std::vector<bool> kelly_refine_flags(LinearElasticProblem<dim> &problem, double cell_fraction);
+  std::vector<bool> kelly_refine_flags(Discretization<dim> &problem, const dealii::PETScWrappers::MPI::Vector &solution,
+                                       double cell_fraction);
 
   // The same with dual-weighted indicators for the targets (quantity names; values: the model's
   // quantities, derived ones included; derived: Quantities/Derived). how: which indicator each
   // target got, for the log.
   template <int dim>
   std::vector<bool> goal_oriented_refine_flags(LinearElasticProblem<dim> &problem,
+                                               const std::vector<std::string> &targets, const Quantities &values,
+                                               const std::string &derived, double cell_fraction, std::string &how);
+
+  // The same for a finite-strain problem at its converged state: a target's dual solves
+  // K_T z = j with the tangent at that state, j the target's derivative there (point
+  // displacements and boundary rotations: as in linear elasticity; reactions, moments and
+  // stiffnesses: j = K_T psi), its functionals from a linear model of the same case and mesh.
+  // Stresses at points and the strain energy count as energy-like.
+  template <int dim>
+  std::vector<bool> finite_strain_refine_flags(FiniteStrainProblem<dim> &problem,
                                                const std::vector<std::string> &targets, const Quantities &values,
                                                const std::string &derived, double cell_fraction, std::string &how);
 } // namespace compliant

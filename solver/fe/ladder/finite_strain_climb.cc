@@ -1,12 +1,15 @@
 // (d) in finite strain, when the linear answer's geometric error misses the target: from the
-// case's own mesh, uniform refinement at the case's degree, or degree rungs as in the linear climb
-// when Refinement = degree asks for them (adaptive refinement drives linear rungs only), until the
-// estimate meets the target. Auto stays uniform here: the tangent is assembled cell by cell, whose
-// cost grows steeply with the degree (3D roll-up, degrees 2, 3, 4: 2.9, 22, 130 s for 2.7k, 7.2k,
-// 15k DoFs). Every rung writes the output directory; what stays is the last rung's, with its
-// estimates.
+// case's own mesh, uniform refinement at the case's degree, degree rungs as in the linear climb
+// when Refinement = degree asks for them, or adaptive refinement (Refinement = adaptive) by the
+// duals of the tangent at each rung's converged state (ladder/adaptive_refinement.h), until the
+// estimate meets the target. Auto stays uniform here: the tangent is assembled cell by cell,
+// whose cost grows steeply with the degree (3D roll-up, degrees 2, 3, 4: 2.9, 22, 130 s for 2.7k,
+// 7.2k, 15k DoFs). Every rung writes the output directory; what stays is the last rung's, with
+// its estimates.
 #include "analyses/nonlinear_static.h"
+#include "ladder/adaptive_refinement.h"
 #include "ladder/ladder_climb.h"
+#include "quantities/comparison.h"
 #include "mesh/memory_estimate.h"
 
 #include <iostream>
@@ -23,11 +26,14 @@ namespace compliant
     std::vector<double>                        sizes;
     bool                                       fs_met     = false;
     double                                     last_cells = 0;
+    // Adaptive rungs: each refines the last one's mesh where the duals at its state point.
+    const bool                     adaptive = target.adaptive;
+    std::vector<std::vector<bool>> refinements;
     for (unsigned int j = 0; j <= target.max_refinements && !fs_met; ++j)
       {
-        const RungPlan     plan = fs_planner.plan(j);
+        const RungPlan     plan = fs_planner.plan(adaptive ? 0 : j);
         const unsigned int r    = p.global_refinements + plan.h_steps;
-        if (j > 0)
+        if (j > 0 && !adaptive)
           try
             {
               refuse_refinement_beyond_memory(static_cast<std::uint64_t>(last_cells), dim, plan.refines_cells ? 1 : 0,
@@ -47,19 +53,24 @@ namespace compliant
         nonlinear.analysis           = "nonlinear static";
         nonlinear.element_degree     = plan.degree;
         nonlinear.global_refinements = r;
+        if (adaptive)
+          {
+            nonlinear.mesh_partition       = PartitionRequest::shared; // the flags cover the whole mesh
+            nonlinear.adaptive_refinements = refinements;
+          }
         const RunContext nonlinear_context{nonlinear, context.prm, context.geometry, context.check_only,
                                            context.communicator};
         Rung rung;
         rung.model           = "finite strain";
         rung.degree          = plan.degree;
         rung.refinements     = r;
-        rung.adaptive_cycles = 0;
+        rung.adaptive_cycles = refinements.size();
         dealii::Timer rung_timer;
         // The estimates join the rung's summary before it is written.
-        const auto amend = [&](RunSummary &summary, const FiniteStrainProblem<dim> &) {
+        const auto amend = [&](RunSummary &summary, FiniteStrainProblem<dim> &problem) {
           rung.dofs  = summary.quantities.at("n_dofs");
           last_cells = summary.quantities.at("n_cells");
-          sizes.push_back(fs_planner.mesh_size(false, j, rung.dofs, dim));
+          sizes.push_back(fs_planner.mesh_size(adaptive, j, rung.dofs, dim));
           fs_met = true;
           for (const auto &n : names)
             {
@@ -72,11 +83,13 @@ namespace compliant
               const auto   e = estimate_discretization_error(history[n], sizes, plan.degree + 1.0, attainable);
               rung.values[n]         = found->second;
               rung.estimates[n]      = e;
-              const double stop      = stop_rule.stop_estimate(n, e, fs_planner.degree_rungs());
+              const double stop      = stop_rule.stop_estimate(n, e, adaptive || fs_planner.degree_rungs());
               rung.stop_estimates[n] = stop;
               fs_met                 = fs_met && stop >= 0 && stop <= target.relative_error;
             }
           add_estimates_to_summary(summary, rung);
+          if (adaptive && !fs_met && j < target.max_refinements)
+            refinements.push_back(finite_strain_flags(problem, summary));
           summary.settings.insert({"ladder", fs_met ? "target met" : "target not met"});
           summary.settings.insert({"ladder_geometric_check", geometric_reason});
           if (out_of_plane >= 0)
@@ -103,7 +116,7 @@ namespace compliant
         else if (j == target.max_refinements)
           rung.decision = "target NOT met within Target/Maximum refinements";
         else
-          rung.decision = fs_planner.next_step(false, j) + stop_rule.why_go_on(rung.estimates, target.relative_error);
+          rung.decision = fs_planner.next_step(adaptive, j) + stop_rule.why_go_on(rung.estimates, target.relative_error);
         print(rung);
         rungs.push_back(rung);
       }
@@ -112,6 +125,22 @@ namespace compliant
     return fs_met ? 0 : 4;
   }
 
+  template <int dim>
+  std::vector<bool> LadderClimb<dim>::finite_strain_flags(FiniteStrainProblem<dim> &problem, const RunSummary &summary)
+  {
+    if (!target.goal_oriented)
+      return kelly_refine_flags<dim>(problem, problem.solution, target.refined_fraction);
+    auto values = summary.quantities;
+    add_derived_quantities(p.derived, values, problem.expression_variables());
+    std::string how;
+    auto flags = finite_strain_refine_flags(problem, names, values, p.derived, target.refined_fraction, how);
+    if (root)
+      std::cout << "  (d) refine for " << how << " (duals of the tangent at the converged state)" << std::endl;
+    return flags;
+  }
+
   template int LadderClimb<2>::climb_finite_strain();
   template int LadderClimb<3>::climb_finite_strain();
+  template std::vector<bool> LadderClimb<2>::finite_strain_flags(FiniteStrainProblem<2> &, const RunSummary &);
+  template std::vector<bool> LadderClimb<3>::finite_strain_flags(FiniteStrainProblem<3> &, const RunSummary &);
 } // namespace compliant

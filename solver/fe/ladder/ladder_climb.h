@@ -26,6 +26,10 @@
 namespace compliant
 {
   template <int dim>
+  class FiniteStrainProblem;
+  struct RunSummary;
+
+  template <int dim>
   class LadderClimb
   {
   public:
@@ -49,6 +53,8 @@ namespace compliant
     std::string check_plane_stress(const LinearStaticModel<dim> &model, const Rung &rung, unsigned int k);
     int                finish_linear();
     int                climb_finite_strain();
+    // Refine flags for the next adaptive finite-strain rung, from the problem at its converged state.
+    std::vector<bool> finite_strain_flags(FiniteStrainProblem<dim> &problem, const RunSummary &summary);
     // This plane-stress model cannot stand for its 3D part (dimension_reason says why).
     int            give_way_to_3d();
     TargetSettings paired_target() const;

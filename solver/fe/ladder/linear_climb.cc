@@ -107,7 +107,7 @@ namespace compliant
   std::vector<bool> LadderClimb<dim>::refine_flags(const LinearStaticModel<dim> &model)
   {
     if (!target.goal_oriented)
-      return kelly_refine_flags(*model.problem, target.refined_fraction);
+      return kelly_refine_flags<dim>(*model.problem, model.problem->solution, target.refined_fraction);
     auto values = model.quantities;
     add_derived_quantities(p.derived, values, model.problem->expression_variables());
     std::string how;

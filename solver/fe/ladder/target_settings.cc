@@ -31,14 +31,15 @@ namespace compliant
                       "the first that meets the target to observe an order), uniform otherwise "
                       "(2D, and tetrahedra after the first rung at degree 2). "
                       "uniform: every rung halves every cell. adaptive: every rung refines the cells "
-                      "with the largest Kelly indicators (gradient jumps), leaving hanging nodes; "
-                      "quadrilateral and hexahedral meshes only. degree: the rungs raise the "
+                      "with the largest indicators (Refinement indicator), leaving hanging nodes; "
+                      "quadrilateral and hexahedral meshes only; finite-strain rungs too, their duals "
+                      "solved with the tangent at each rung's converged state. degree: the rungs raise the "
                       "element degree on the case's mesh, 2, 3, 4 (only 2 on triangles and "
                       "tetrahedra), then halve every cell at the highest degree; the error is extrapolated in the DoF "
                       "count (p-extension); finite-strain rungs climb in degree too. A degree step "
                       "costs about 3x the DoFs in 3D where halving the cells costs 8x. "
                       "Discretization/Element degree is then not used. Finite-strain rungs climb "
-                      "uniformly at Discretization/Element degree under auto, uniform and adaptive "
+                      "at Discretization/Element degree under auto, uniform and adaptive "
                       "(the tangent's assembly cost grows steeply with the degree).");
     prm.declare_entry("Closed forms", "true", Patterns::Bool(),
                       "Rung (a): true lets a closed form of Comparison/Checks answer a target "
