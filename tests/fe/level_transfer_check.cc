@@ -1,8 +1,9 @@
 // The p-multigrid's own level transfer (fast_solver/level_transfer.h) against deal.II's
 // MGTwoLevelTransfer on the same two levels: prolongation and restriction of random vectors agree
-// to round-off in 2D and 3D, degrees 1 to 4, with a boundary held at zero, on a curved (smoothly
-// transformed) mesh, on any rank count (the ctest runs it on 1 and on 2 ranks). On a mesh with
-// hanging nodes the own transfer steps aside and deal.II's serves.
+// to round-off in 2D and 3D, from degree 1 to 2 up to 3 to 4, with a boundary held at zero, on a
+// curved (smoothly transformed) mesh, on one mesh and across twin meshes (the error estimates'
+// enriched model over the model's own levels), on any rank count (the ctest runs it on 1 and on 2
+// ranks). On a mesh with hanging nodes the own transfer steps aside and deal.II's serves.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -50,11 +51,9 @@ namespace
   }
 
   template <int dim>
-  Comparison compare(const unsigned int fine_degree, const bool hanging)
+  void build_mesh(parallel::distributed::Triangulation<dim> &mesh, const bool hanging)
   {
-    const MPI_Comm                            comm = MPI_COMM_WORLD;
-    parallel::distributed::Triangulation<dim> mesh(comm);
-    std::vector<unsigned int>                 cells(dim, 2);
+    std::vector<unsigned int> cells(dim, 2);
     cells[0] = 4;
     Point<dim> far;
     for (unsigned int d = 0; d < dim; ++d)
@@ -75,9 +74,20 @@ namespace
         return q;
       },
       mesh);
+  }
+
+  // twin: the coarse DoFs on a second mesh built the same way.
+  template <int dim>
+  Comparison compare(const unsigned int fine_degree, const bool hanging, const bool twin = false)
+  {
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
+    parallel::distributed::Triangulation<dim> mesh(comm), twin_mesh(comm);
+    build_mesh(mesh, hanging);
+    if (twin)
+      build_mesh(twin_mesh, hanging);
 
     const FESystem<dim> fine_fe(FE_Q<dim>(fine_degree), dim), coarse_fe(FE_Q<dim>(fine_degree - 1), dim);
-    DoFHandler<dim>     fine_dofs(mesh), coarse_dofs(mesh);
+    DoFHandler<dim>     fine_dofs(mesh), coarse_dofs(twin ? twin_mesh : mesh);
     fine_dofs.distribute_dofs(fine_fe);
     coarse_dofs.distribute_dofs(coarse_fe);
     MGLevelObject<const DoFHandler<dim> *>    dofs(0, 1);
@@ -143,6 +153,18 @@ TEST(LevelTransfer, AgreesWithDealIIs)
       EXPECT_LT(solid.restriction, 1e-13) << "3D, degree " << degree;
       EXPECT_GT(solid.smallest_entry_scale, 0.1) << "3D, degree " << degree;
     }
+}
+
+TEST(LevelTransfer, AcrossTwinMeshes)
+{
+  const auto plane = compare<2>(2, false, true);
+  EXPECT_EQ(plane.own_levels, 1u);
+  EXPECT_LT(plane.prolongation, 1e-13);
+  EXPECT_LT(plane.restriction, 1e-13);
+  const auto solid = compare<3>(2, false, true);
+  EXPECT_EQ(solid.own_levels, 1u);
+  EXPECT_LT(solid.prolongation, 1e-13);
+  EXPECT_LT(solid.restriction, 1e-13);
 }
 
 TEST(LevelTransfer, HangingNodesTakeDealIIs)

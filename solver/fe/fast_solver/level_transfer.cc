@@ -78,9 +78,13 @@ namespace compliant::fast_solver
           coarse_fe.n_base_elements() != 1)
         return false;
       const unsigned int fine_degree = fine_fe.base_element(0).degree, coarse_degree = coarse_fe.base_element(0).degree;
-      if (fine_fe.base_element(0).n_dofs_per_cell() != Utilities::pow(fine_degree + 1, dim) ||
-          coarse_fe.base_element(0).n_dofs_per_cell() != Utilities::pow(coarse_degree + 1, dim))
-        return false; // not a tensor-product Lagrange element
+      // FE_Q with its own (Gauss-Lobatto) points only: the 1D matrix below is built for them.
+      const auto is_plain_q = [](const FiniteElement<dim> &base) {
+        return dynamic_cast<const FE_Q<dim> *>(&base) != nullptr &&
+               base.get_unit_support_points() == FE_Q<dim>(base.degree).get_unit_support_points();
+      };
+      if (!is_plain_q(fine_fe.base_element(0)) || !is_plain_q(coarse_fe.base_element(0)))
+        return false;
       points_fine   = fine_degree + 1;
       points_coarse = coarse_degree + 1;
       n_fine        = Utilities::pow(points_fine, dim);

@@ -1,6 +1,7 @@
 // The transfers between the p-multigrid's levels: degree k and k + 1 on one mesh, or on twin
 // meshes whose cells come in the same order (the error estimates' degree-(p+1) model over the
-// degree-p model's own levels).
+// degree-p model's own levels). Cells are matched by level, index and ownership only: callers
+// make sure twin meshes are the same mesh (PMultigridSolver compares their cells' centres).
 //
 // Where no constraint couples DoFs (supports held at zero, no hanging nodes, no periodicity) a
 // cell-wise interpolation of our own, set up in one pass over the cells: each fine DoF is written

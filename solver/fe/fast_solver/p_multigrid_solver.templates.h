@@ -156,8 +156,15 @@ namespace compliant::fast_solver
     // A reused degree-1 level kept with its DoFs (a degree-1 model on a twin mesh) is level 0 as it is.
     const auto &reused     = settings.reused_degree_one_level;
     const auto *kept_dofs  = reused && top == 1 ? reused->template dofs<dim>() : nullptr;
-    const bool  take_kept  = kept_dofs && same_owned_cells(kept_dofs->get_triangulation(),
-                                                           fine_dofs.get_triangulation(), communicator);
+    // Twin meshes owned alike, and the kept DoFs still numbered as when the level's solver was built.
+    const bool take_kept =
+      kept_dofs &&
+      Utilities::MPI::min(reused->owned == kept_dofs->locally_owned_dofs() &&
+                              !reused->fingerprint.empty() && reused->fingerprint.back() == kept_dofs->n_dofs() ?
+                            1 :
+                            0,
+                          communicator) == 1 &&
+      same_owned_cells(kept_dofs->get_triangulation(), fine_dofs.get_triangulation(), communicator);
     for (unsigned int level = 0; level <= top; ++level)
       {
         if (level == top)
@@ -345,7 +352,8 @@ namespace compliant::fast_solver
       throw std::logic_error("PMultigridSolver::update: the levels below are another solver's");
     for (unsigned int level = L.operators.min_level(); level <= L.operators.max_level(); ++level)
       change(*L.operators[level]);
-    if (stats.coarse_reused) // the operators changed: the reused level no longer fits
+    // A degree-1 solver (top 0) whose reused level no longer fits the changed operator.
+    if (stats.coarse_reused)
       {
         stats.coarse_reused     = false;
         coarse_rigid_body_modes = rigid_body_modes(*L.mapping, *L.dofs[0], communicator);

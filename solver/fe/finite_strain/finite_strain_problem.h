@@ -129,16 +129,18 @@ namespace compliant
                                                       double lambda, bool matrix_free) const;
 
     // The duals of goal-oriented refinement at the current (converged) state (ladder/
-    // adaptive_refinement.h). K_T psi by central differences of the internal forces, hanging
-    // nodes condensed, the rows `homogeneous` holds zeroed: a reaction's j, whose psi lives on a
-    // supported boundary (the assembled tangent has no columns there).
+    // adaptive_refinement.h). The solver of K_T z = j: the tangent assembled and factored once
+    // (MUMPS, LU), `homogeneous` its constraints held at zero; rows they hold are zeroed in j and
+    // z comes ghosted. The tangent is symmetric unless a follower pressure or a 3D rigid moment
+    // acts; then this solves with it, not its transpose (an indicator's approximation).
+    // `homogeneous` must outlive the returned function.
+    std::function<dealii::PETScWrappers::MPI::Vector(dealii::PETScWrappers::MPI::Vector)>
+    tangent_dual_solver(dealii::AffineConstraints<double> &homogeneous) const;
+    // K_T psi by central differences of the internal forces, condensed by `homogeneous`: a
+    // reaction's j, whose psi lives on a supported boundary (the assembled tangent has no columns
+    // there).
     dealii::PETScWrappers::MPI::Vector
     tangent_times(const dealii::PETScWrappers::MPI::Vector &psi, const dealii::AffineConstraints<double> &homogeneous) const;
-    // z with K_T z = j under the homogeneous constraints of the current state, by one MUMPS
-    // factorization of the assembled tangent (LU); rows the constraints hold are zeroed in j.
-    // z is ghosted. The tangent is symmetric unless a follower pressure or a 3D rigid moment acts;
-    // then this is the primal tangent's solve, not its transpose's (an indicator's approximation).
-    dealii::PETScWrappers::MPI::Vector solve_tangent_dual(dealii::PETScWrappers::MPI::Vector j) const;
 
     // Whether Newton steps use the matrix-free p-multigrid (Linear solver/Method auto or
     // matrix-free, degree >= 2, displacement-only, no follower pressure), and why not.

@@ -4,6 +4,7 @@
 #include "finite_strain/finite_strain_problem.h"
 
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include "fast_solver/tangent_operator.h"
@@ -120,44 +121,44 @@ namespace compliant
   {
     PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
     PETScWrappers::MPI::Vector state(locally_owned_dofs, communicator), plus(state), minus(state);
-    // A step small against the state's displacements and the mesh (central differences: error h^2).
-    const double scale = std::max(solution.linfty_norm(), 1e-3 * triangulation.begin_active()->diameter());
+    // A step small against the state's displacements and the cells (central differences: error
+    // h^2), the same on every rank.
+    const double scale = std::max(solution.linfty_norm(), 1e-3 * GridTools::minimal_cell_diameter(triangulation));
     const double h     = 1e-6 * scale / std::max(psi.linfty_norm(), 1e-300);
     state              = solution;
     state.add(h, psi);
     ghosted = state;
-    assemble(ghosted, load_factor, &hanging_node_constraints, false, plus);
+    assemble(ghosted, load_factor, &homogeneous, false, plus);
     state.add(-2 * h, psi);
     ghosted = state;
-    assemble(ghosted, load_factor, &hanging_node_constraints, false, minus);
+    assemble(ghosted, load_factor, &homogeneous, false, minus);
     // assemble gives f_ext - f_int: K_T psi = (minus - plus) / 2h
     PETScWrappers::MPI::Vector product = minus;
     product.add(-1, plus);
     product /= 2 * h;
-    for (const auto i : locally_owned_dofs)
-      if (homogeneous.is_constrained(i))
-        product(i) = 0;
-    product.compress(VectorOperation::insert);
     return product;
   }
 
   template <int dim>
-  PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::solve_tangent_dual(PETScWrappers::MPI::Vector j) const
+  std::function<PETScWrappers::MPI::Vector(PETScWrappers::MPI::Vector)>
+  FiniteStrainProblem<dim>::tangent_dual_solver(AffineConstraints<double> &homogeneous) const
   {
-    AffineConstraints<double> homogeneous;
     assemble_tangent(homogeneous);
-    for (const auto i : locally_owned_dofs)
-      if (homogeneous.is_constrained(i))
-        j(i) = 0;
-    j.compress(VectorOperation::insert);
-    DirectFactorization factor;
-    factor.factor(tangent, false);
-    PETScWrappers::MPI::Vector z(locally_owned_dofs, communicator);
-    factor.solve(z, j);
-    homogeneous.distribute(z);
-    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
-    ghosted = z;
-    return ghosted;
+    auto factor = std::make_shared<DirectFactorization>();
+    factor->factor(tangent, false);
+    const AffineConstraints<double> *held = &homogeneous;
+    return [this, factor, held](PETScWrappers::MPI::Vector j) {
+      for (const auto i : locally_owned_dofs)
+        if (held->is_constrained(i))
+          j(i) = 0;
+      j.compress(VectorOperation::insert);
+      PETScWrappers::MPI::Vector z(locally_owned_dofs, communicator);
+      factor->solve(z, j);
+      held->distribute(z);
+      PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+      ghosted = z;
+      return ghosted;
+    };
   }
 
 #define INSTANTIATE(dim)                                                                                       \
@@ -170,7 +171,8 @@ namespace compliant
     const PETScWrappers::MPI::Vector &, const PETScWrappers::MPI::Vector &, double, bool) const;              \
   template PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::tangent_times(                                 \
     const PETScWrappers::MPI::Vector &, const AffineConstraints<double> &) const;                              \
-  template PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::solve_tangent_dual(PETScWrappers::MPI::Vector) const;
+  template std::function<PETScWrappers::MPI::Vector(PETScWrappers::MPI::Vector)>                             \
+  FiniteStrainProblem<dim>::tangent_dual_solver(AffineConstraints<double> &) const;
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

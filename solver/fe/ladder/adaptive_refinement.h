@@ -43,6 +43,9 @@ namespace compliant
   // displacements and boundary rotations: as in linear elasticity; reactions, moments and
   // stiffnesses: j = K_T psi), its functionals from a linear model of the same case and mesh.
   // Stresses at points and the strain energy count as energy-like.
+  // Beyond this many DoFs a 3D tangent that Newton solved matrix-free is not factored for a dual
+  // (Kelly's indicator then, and the log says so).
+  inline constexpr unsigned int max_factored_dual_dofs = 300000;
   template <int dim>
   std::vector<bool> finite_strain_refine_flags(FiniteStrainProblem<dim> &problem,
                                                const std::vector<std::string> &targets, const Quantities &values,

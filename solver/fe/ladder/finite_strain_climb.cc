@@ -88,7 +88,8 @@ namespace compliant
               fs_met                 = fs_met && stop >= 0 && stop <= target.relative_error;
             }
           add_estimates_to_summary(summary, rung);
-          if (adaptive && !fs_met && j < target.max_refinements)
+          // Only from a completed path: a failed one's state is not the one the target asks about.
+          if (adaptive && !fs_met && j < target.max_refinements && summary.settings.at("status") == "completed")
             refinements.push_back(finite_strain_flags(problem, summary));
           summary.settings.insert({"ladder", fs_met ? "target met" : "target not met"});
           summary.settings.insert({"ladder_geometric_check", geometric_reason});
@@ -132,8 +133,17 @@ namespace compliant
       return kelly_refine_flags<dim>(problem, problem.solution, target.refined_fraction);
     auto values = summary.quantities;
     add_derived_quantities(p.derived, values, problem.expression_variables());
-    std::string how;
-    auto flags = finite_strain_refine_flags(problem, names, values, p.derived, target.refined_fraction, how);
+    std::string       how;
+    std::vector<bool> flags;
+    try
+      {
+        flags = finite_strain_refine_flags(problem, names, values, p.derived, target.refined_fraction, how);
+      }
+    catch (const std::exception &e) // a singular tangent at a limit point, an inverted cell
+      {
+        how   = std::string("Kelly's indicator (the duals failed: ") + e.what() + ")";
+        flags = kelly_refine_flags<dim>(problem, problem.solution, target.refined_fraction);
+      }
     if (root)
       std::cout << "  (d) refine for " << how << " (duals of the tangent at the converged state)" << std::endl;
     return flags;
