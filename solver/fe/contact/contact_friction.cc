@@ -11,6 +11,19 @@ namespace compliant
 {
   using namespace dealii;
 
+  namespace
+  {
+    // The obstacle's force on a held node: minus its residual (the node's reaction).
+    template <int dim, typename HeldNode>
+    Tensor<1, dim> obstacle_force(const HeldNode &node, const PETScWrappers::MPI::Vector &residual)
+    {
+      Tensor<1, dim> f;
+      for (unsigned int d = 0; d < dim; ++d)
+        f[d] = -residual(node.dofs[d]);
+      return f;
+    }
+  } // namespace
+
   template <int dim>
   bool ContactSet<dim>::has_friction() const
   {
@@ -40,9 +53,7 @@ namespace compliant
                                         const bool release, const double force_tolerance, Update &update) const
   {
     const double   mu = obstacles[node.active].friction;
-    Tensor<1, dim> f; // the obstacle's force on the node: -r
-    for (unsigned int d = 0; d < dim; ++d)
-      f[d] = -residual(node.dofs[d]);
+    const Tensor<1, dim> f          = obstacle_force<dim>(node, residual);
     const double         normal     = f * n;
     const Tensor<1, dim> tangential = f - normal * n;
     if (!node.slip)
@@ -99,12 +110,7 @@ namespace compliant
   {
     const double mu = frictional(node) ? obstacles[node.active].friction : 0.;
     if (mu > 0 && !node.slip)
-      {
-        Tensor<1, dim> f;
-        for (unsigned int d = 0; d < dim; ++d)
-          f[d] = -residual(node.dofs[d]);
-        return f;
-      }
+      return obstacle_force<dim>(node, residual);
     Tensor<1, dim> f = force * normal;
     if (mu > 0)
       f -= mu * node.normal_force * node.slip_direction;

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "discretization/dof_fingerprint.h"
 #include "fast_solver/coarse_level_solver.h"
 #include "fast_solver/level_transfer.h"
 #include "mesh/cell_aspect_ratio.h"
@@ -81,28 +82,6 @@ namespace compliant::fast_solver
 
   namespace
   {
-    // Sums over the locally owned cells of (index + 1) (i + 1) times each coordinate of the cell's
-    // centre, for the cell's i-th DoF, and the DoF count: equal on two DoFHandlers of one element
-    // on twin meshes exactly when they number the DoFs alike (up to a coincidence of sums).
-    template <int dim>
-    std::vector<double> cell_dof_fingerprint(const DoFHandler<dim> &dofs, MPI_Comm communicator)
-    {
-      std::vector<double>                  sums(dim, 0.);
-      std::vector<types::global_dof_index> indices(dofs.get_fe().n_dofs_per_cell());
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(indices);
-            const Point<dim> centre = cell->center();
-            for (unsigned int i = 0; i < indices.size(); ++i)
-              for (unsigned int d = 0; d < dim; ++d)
-                sums[d] += (indices[i] + 1.) * (i + 1.) * centre[d];
-          }
-      Utilities::MPI::sum(sums, communicator, sums);
-      sums.push_back(dofs.n_dofs());
-      return sums;
-    }
-
     // Whether two triangulations are twins with the same cells on this rank as on every other:
     // the sums over the locally owned cells of (index + 1) times each coordinate of the centre.
     template <int dim>
@@ -233,10 +212,8 @@ namespace compliant::fast_solver
     // Twin meshes: a DoFHandler of the lower degree on this mesh must number as the lower one's.
     DoFHandler<dim> twin(fine_dofs.get_triangulation());
     twin.distribute_dofs(lower_dofs.get_fe());
-    const bool owned_alike = twin.locally_owned_dofs() == lower_dofs.locally_owned_dofs();
     if (lower_dofs.get_fe().degree + 1 != fine_dofs.get_fe().degree ||
-        Utilities::MPI::min(owned_alike ? 1 : 0, communicator) == 0 ||
-        cell_dof_fingerprint(twin, communicator) != cell_dof_fingerprint(lower_dofs, communicator))
+        !numbered_alike(twin, lower_dofs, communicator))
       return false;
 
     L.dofs.resize(0, 1);

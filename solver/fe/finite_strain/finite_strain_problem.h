@@ -203,6 +203,11 @@ namespace compliant
     // u + alpha du, with every rigid boundary put on its exact rigid motion.
     void add_correction(dealii::PETScWrappers::MPI::Vector &u, double alpha,
                         const dealii::PETScWrappers::MPI::Vector &du) const;
+    // K v at state u by central differences of the residual with step h, assembled under
+    // `constraints` (null: none).
+    dealii::PETScWrappers::MPI::Vector central_difference(const dealii::PETScWrappers::MPI::Vector &u,
+                                                          const dealii::PETScWrappers::MPI::Vector &v, double lambda,
+                                                          double h, const dealii::AffineConstraints<double> *constraints) const;
     // Assembles the residual lambda f_ext - f_int (and the tangent if asked) at state u.
     // full_residual, if given, also gets it without the Dirichlet conditions (hanging nodes
     // condensed): the internal force scale of the convergence test, from the same pass.

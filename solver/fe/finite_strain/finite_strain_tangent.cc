@@ -95,22 +95,11 @@ namespace compliant
     AffineConstraints<double> none;
     none.close();
     PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
-    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator), plus(rhs), minus(rhs), Kv(rhs);
-    PETScWrappers::MPI::Vector state(locally_owned_dofs, communicator);
+    PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator), Kv(rhs);
     ghosted = u;
     assemble(ghosted, lambda, &none, true, rhs);
     tangent.vmult(Kv, v);
-    state = u;
-    state.add(h, v);
-    ghosted = state;
-    assemble(ghosted, lambda, nullptr, false, plus);
-    state.add(-2 * h, v);
-    ghosted = state;
-    assemble(ghosted, lambda, nullptr, false, minus);
-    // rhs = f_ext - f_int, so K v = -(d rhs / du) v
-    PETScWrappers::MPI::Vector difference = minus;
-    difference.add(-1, plus);
-    difference /= 2 * h;
+    PETScWrappers::MPI::Vector difference = central_difference(u, v, lambda, h, nullptr);
     difference.add(-1, Kv);
     return difference.l2_norm() / Kv.l2_norm();
   }
@@ -119,20 +108,29 @@ namespace compliant
   PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::tangent_times(const PETScWrappers::MPI::Vector &psi,
                                                                      const AffineConstraints<double> &homogeneous) const
   {
-    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
-    PETScWrappers::MPI::Vector state(locally_owned_dofs, communicator), plus(state), minus(state);
     // A step small against the state's displacements and the cells (central differences: error
     // h^2), the same on every rank.
     const double scale = std::max(solution.linfty_norm(), 1e-3 * GridTools::minimal_cell_diameter(triangulation));
     const double h     = 1e-6 * scale / std::max(psi.linfty_norm(), 1e-300);
-    state              = solution;
-    state.add(h, psi);
+    return central_difference(solution, psi, load_factor, h, &homogeneous);
+  }
+
+  template <int dim>
+  PETScWrappers::MPI::Vector FiniteStrainProblem<dim>::central_difference(const PETScWrappers::MPI::Vector &u,
+                                                                          const PETScWrappers::MPI::Vector &v,
+                                                                          const double lambda, const double h,
+                                                                          const AffineConstraints<double> *constraints) const
+  {
+    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+    PETScWrappers::MPI::Vector state(locally_owned_dofs, communicator), plus(state), minus(state);
+    state = u;
+    state.add(h, v);
     ghosted = state;
-    assemble(ghosted, load_factor, &homogeneous, false, plus);
-    state.add(-2 * h, psi);
+    assemble(ghosted, lambda, constraints, false, plus);
+    state.add(-2 * h, v);
     ghosted = state;
-    assemble(ghosted, load_factor, &homogeneous, false, minus);
-    // assemble gives f_ext - f_int: K_T psi = (minus - plus) / 2h
+    assemble(ghosted, lambda, constraints, false, minus);
+    // assemble gives f_ext - f_int: K v = (R(u - h v) - R(u + h v)) / 2h
     PETScWrappers::MPI::Vector product = minus;
     product.add(-1, plus);
     product /= 2 * h;

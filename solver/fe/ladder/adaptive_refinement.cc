@@ -6,6 +6,7 @@
 #include <deal.II/numerics/error_estimator.h>
 
 #include "analyses/error_estimates.h"
+#include "discretization/dof_fingerprint.h"
 #include "input/spec_list.h"
 #include "quantities/comparison.h"
 #include "quantities/goal_functionals.h"
@@ -200,28 +201,6 @@ namespace compliant
       return flags_from(m.model, indicators, cell_fraction);
     }
 
-    // Whether two models of one mesh number their DoFs alike (each rank: the same owned DoFs, and
-    // the sums of the DoF indices times their cells' centres agree).
-    template <int dim>
-    bool numbered_alike(const Discretization<dim> &a, const Discretization<dim> &b)
-    {
-      const auto sums = [](const Discretization<dim> &d) {
-        std::vector<double>                  s(dim, 0.);
-        std::vector<types::global_dof_index> indices(d.fe->n_dofs_per_cell());
-        for (const auto &cell : d.dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              cell->get_dof_indices(indices);
-              for (unsigned int i = 0; i < indices.size(); ++i)
-                for (unsigned int k = 0; k < dim; ++k)
-                  s[k] += (indices[i] + 1.) * (i + 1.) * cell->center()[k];
-            }
-        return s;
-      };
-      const bool alike = a.dof_handler.n_dofs() == b.dof_handler.n_dofs() &&
-                         a.locally_owned_dofs == b.locally_owned_dofs && sums(a) == sums(b);
-      return Utilities::MPI::min(alike ? 1 : 0, a.communicator) == 1;
-    }
   } // namespace
 
   template <int dim>
@@ -254,7 +233,7 @@ namespace compliant
     try
       {
         twin.setup();
-        if (!numbered_alike<dim>(twin, problem))
+        if (!numbered_alike(twin.dof_handler, problem.dof_handler, problem.communicator))
           why_not = "a linear model of this mesh numbers its DoFs otherwise";
       }
     catch (const std::exception &e)
