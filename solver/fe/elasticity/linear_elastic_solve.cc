@@ -213,7 +213,8 @@ namespace compliant
       std::ostringstream note;
       note << "largest cell aspect ratio " << std::setprecision(3) << s.largest_aspect_ratio
            << ": Chebyshev degree " << s.smoothing_degree << " over range " << s.smoothing_range
-           << ", degree-1 level by " << (s.coarse_direct ? "MUMPS" : "GAMG")
+           << ", degree-1 level by " << (s.coarse_direct ? "MUMPS" : "GAMG") << ", kernels on "
+           << fast_solver::simd_lanes<double> << " SIMD lane" << (fast_solver::simd_lanes<double> > 1 ? "s" : "")
            << (s.lower_reused ? "; levels of degree <= p, their smoothers and the degree-1 level the degree-p model's" :
                s.coarse_reused ? ", the degree-p model's" : "");
       statistics.multigrid_note = note.str();

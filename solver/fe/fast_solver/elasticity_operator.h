@@ -36,7 +36,7 @@ namespace compliant::fast_solver
     void add_kernel_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix) const override;
 
     // Per cell batch: the Lame parameters of each lane's cell.
-    std::vector<dealii::VectorizedArray<Number>> lambda, mu;
+    std::vector<SimdArray<Number>> lambda, mu;
     bool   reduced = false;
     double hourglass = 0; // the fully integrated share e when reduced
 

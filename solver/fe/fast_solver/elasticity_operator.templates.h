@@ -27,22 +27,22 @@ namespace compliant::fast_solver
     template <int dim, int degree, int n_q, typename Number>
     struct Kernel
     {
-      using Evaluation = FEEvaluation<dim, degree, n_q, dim, Number>;
+      using Evaluation = FEEvaluation<dim, degree, n_q, dim, Number, SimdArray<Number>>;
       using VectorType = LinearAlgebra::distributed::Vector<Number>;
 
       unsigned int quad  = 0;
       Number       scale = 1;
 
-      void stress_at_quadrature_points(Evaluation &phi, const VectorizedArray<Number> &lambda,
-                                       const VectorizedArray<Number> &mu) const
+      void stress_at_quadrature_points(Evaluation &phi, const SimdArray<Number> &lambda,
+                                       const SimdArray<Number> &mu) const
       {
         phi.evaluate(EvaluationFlags::gradients);
-        const VectorizedArray<Number> two_mu = 2 * scale * mu, l = scale * lambda;
+        const SimdArray<Number> two_mu = 2 * scale * mu, l = scale * lambda;
         for (unsigned int q = 0; q < phi.n_q_points; ++q)
           {
-            const SymmetricTensor<2, dim, VectorizedArray<Number>> eps = phi.get_symmetric_gradient(q);
-            SymmetricTensor<2, dim, VectorizedArray<Number>> sigma = two_mu * eps;
-            const VectorizedArray<Number> lambda_trace = l * trace(eps);
+            const SymmetricTensor<2, dim, SimdArray<Number>> eps = phi.get_symmetric_gradient(q);
+            SymmetricTensor<2, dim, SimdArray<Number>> sigma = two_mu * eps;
+            const SimdArray<Number> lambda_trace = l * trace(eps);
             for (unsigned int d = 0; d < dim; ++d)
               sigma[d][d] += lambda_trace;
             phi.submit_symmetric_gradient(sigma, q);
@@ -50,10 +50,10 @@ namespace compliant::fast_solver
         phi.integrate(EvaluationFlags::gradients);
       }
 
-      void apply(const MatrixFree<dim, Number> &data, VectorType &dst, const VectorType &src,
+      void apply(const MatrixFree<dim, Number, SimdArray<Number>> &data, VectorType &dst, const VectorType &src,
                  const std::pair<unsigned int, unsigned int> &range,
-                 const std::vector<VectorizedArray<Number>>   &lambda,
-                 const std::vector<VectorizedArray<Number>>   &mu, const bool plain) const
+                 const std::vector<SimdArray<Number>>   &lambda,
+                 const std::vector<SimdArray<Number>>   &mu, const bool plain) const
       {
         Evaluation phi(data, 0, quad);
         for (unsigned int cell = range.first; cell < range.second; ++cell)
@@ -69,11 +69,11 @@ namespace compliant::fast_solver
       }
 
       // Adds this rule's share to `diagonal`.
-      void diagonal(const MatrixFree<dim, Number> &data, VectorType &diagonal,
-                    const std::vector<VectorizedArray<Number>> &lambda,
-                    const std::vector<VectorizedArray<Number>> &mu) const
+      void diagonal(const MatrixFree<dim, Number, SimdArray<Number>> &data, VectorType &diagonal,
+                    const std::vector<SimdArray<Number>> &lambda,
+                    const std::vector<SimdArray<Number>> &mu) const
       {
-        MatrixFreeTools::compute_diagonal<dim, degree, n_q, dim, Number, VectorizedArray<Number>>(
+        MatrixFreeTools::compute_diagonal<dim, degree, n_q, dim, Number, SimdArray<Number>>(
           data, diagonal,
           [&](Evaluation &phi) {
             const unsigned int cell = phi.get_current_cell_index();
@@ -83,12 +83,12 @@ namespace compliant::fast_solver
       }
 
       // Adds this rule's share to `matrix`.
-      void matrix(const MatrixFree<dim, Number> &data, const AffineConstraints<Number> &constraints,
+      void matrix(const MatrixFree<dim, Number, SimdArray<Number>> &data, const AffineConstraints<Number> &constraints,
                   PETScWrappers::MPI::SparseMatrix &matrix,
-                  const std::vector<VectorizedArray<Number>> &lambda,
-                  const std::vector<VectorizedArray<Number>> &mu) const
+                  const std::vector<SimdArray<Number>> &lambda,
+                  const std::vector<SimdArray<Number>> &mu) const
       {
-        MatrixFreeTools::compute_matrix<dim, degree, n_q, dim, Number, VectorizedArray<Number>>(
+        MatrixFreeTools::compute_matrix<dim, degree, n_q, dim, Number, SimdArray<Number>>(
           data, constraints, matrix,
           [&](Evaluation &phi) {
             const unsigned int cell = phi.get_current_cell_index();
@@ -111,8 +111,8 @@ namespace compliant::fast_solver
     this->reinit_matrix_free(mapping_in, dof_handler, constraints_in, reduced);
     const auto        &data      = *this->data;
     const unsigned int n_batches = data.n_cell_batches();
-    lambda.assign(n_batches, VectorizedArray<Number>());
-    mu.assign(n_batches, VectorizedArray<Number>());
+    lambda.assign(n_batches, SimdArray<Number>());
+    mu.assign(n_batches, SimdArray<Number>());
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       for (unsigned int lane = 0; lane < data.n_active_entries_per_cell_batch(batch); ++lane)
         {
@@ -127,7 +127,7 @@ namespace compliant::fast_solver
                                                     const bool plain) const
   {
     this->data->template cell_loop<VectorType, VectorType>(
-      [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
+      [&](const MatrixFree<dim, Number, SimdArray<Number>> &mf, VectorType &d, const VectorType &s,
           const std::pair<unsigned int, unsigned int> &range) {
         for_each_rule<Kernel, dim, Number>(this->fe_degree, reduced, hourglass,
                                    [&](const auto &kernel) { kernel.apply(mf, d, s, range, lambda, mu, plain); });

@@ -27,10 +27,10 @@ namespace compliant::fast_solver
         constraints_have_entries = true;
     constraints_have_entries =
       Utilities::MPI::logical_or(constraints_have_entries, dof_handler.get_communicator());
-    typename MatrixFree<dim, Number>::AdditionalData additional_data;
-    additional_data.tasks_parallel_scheme = MatrixFree<dim, Number>::AdditionalData::none;
+    typename MatrixFree<dim, Number, SimdArray<Number>>::AdditionalData additional_data;
+    additional_data.tasks_parallel_scheme = MatrixFree<dim, Number, SimdArray<Number>>::AdditionalData::none;
     additional_data.mapping_update_flags  = update_gradients | update_JxW_values;
-    data = std::make_shared<MatrixFree<dim, Number>>();
+    data = std::make_shared<MatrixFree<dim, Number, SimdArray<Number>>>();
     std::vector<Quadrature<1>> rules{QGauss<1>(fe_degree + 1)};
     if (with_reduced_quadrature)
       rules.push_back(QGauss<1>(fe_degree));
@@ -54,10 +54,10 @@ namespace compliant::fast_solver
     constraints = &constraints_in;
     mapping     = &mapping_in;
     constrained_local_dofs.clear();
-    typename MatrixFree<dim, Number>::AdditionalData additional_data;
-    additional_data.tasks_parallel_scheme = MatrixFree<dim, Number>::AdditionalData::none;
+    typename MatrixFree<dim, Number, SimdArray<Number>>::AdditionalData additional_data;
+    additional_data.tasks_parallel_scheme = MatrixFree<dim, Number, SimdArray<Number>>::AdditionalData::none;
     additional_data.initialize_mapping    = false;
-    data = std::make_shared<MatrixFree<dim, Number>>();
+    data = std::make_shared<MatrixFree<dim, Number, SimdArray<Number>>>();
     data->reinit(mapping_in, std::vector<const DoFHandler<dim> *>{&dof_handler},
                  std::vector<const AffineConstraints<Number> *>{&constraints_in},
                  std::vector<Quadrature<1>>{QGauss<1>(fe_degree + 1)}, additional_data);

@@ -4,6 +4,8 @@
 // its cell kernel (apply_cells) and its diagonal and matrix from that kernel.
 #pragma once
 
+#include "fast_solver/simd.h"
+
 #include <deal.II/base/subscriptor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
@@ -53,7 +55,7 @@ namespace compliant::fast_solver
     dealii::types::global_dof_index n() const { return m(); }
     Number el(const unsigned int, const unsigned int) const; // not available: throws
 
-    const dealii::MatrixFree<dim, Number> &matrix_free() const { return *data; }
+    const dealii::MatrixFree<dim, Number, SimdArray<Number>> &matrix_free() const { return *data; }
     unsigned int                           degree() const { return fe_degree; }
 
   protected:
@@ -75,7 +77,7 @@ namespace compliant::fast_solver
     // The cell matrices through the kernel, into the matrix laid out by compute_matrix.
     virtual void add_kernel_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix) const = 0;
 
-    std::shared_ptr<dealii::MatrixFree<dim, Number>> data;
+    std::shared_ptr<dealii::MatrixFree<dim, Number, SimdArray<Number>>> data;
     const dealii::AffineConstraints<Number>         *constraints = nullptr;
     const dealii::Mapping<dim>                      *mapping     = nullptr;
     bool                                             constraints_have_entries = false;

@@ -38,7 +38,7 @@ namespace compliant::fast_solver
   {
   public:
     using VectorType = typename MatrixFreeOperatorBase<dim, Number>::VectorType;
-    using Vectorized = dealii::VectorizedArray<Number>;
+    using Vectorized = SimdArray<Number>;
 
     // constraints must be homogeneous (hanging nodes, supports held at zero). The state starts
     // undeformed and stress-free until set_state. hourglass_stiffness e >= 0 on a level of degree

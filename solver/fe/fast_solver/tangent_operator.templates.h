@@ -27,7 +27,7 @@ namespace compliant::fast_solver
     template <int dim, int degree, int n_q, typename Number>
     struct Kernel
     {
-      using Evaluation = FEEvaluation<dim, degree, n_q, dim, Number>;
+      using Evaluation = FEEvaluation<dim, degree, n_q, dim, Number, SimdArray<Number>>;
       using VectorType = LinearAlgebra::distributed::Vector<Number>;
       using State      = typename TangentOperator<dim, Number>::PointState;
 
@@ -44,14 +44,14 @@ namespace compliant::fast_solver
             const auto  H  = phi.get_gradient(q);
             const auto  dE = symmetrize(transpose(s.F) * H);
             const auto  dS = s.dS_dE * dE;
-            phi.submit_gradient(scale * (H * Tensor<2, dim, VectorizedArray<Number>>(s.S) +
-                                         s.F * Tensor<2, dim, VectorizedArray<Number>>(dS)),
+            phi.submit_gradient(scale * (H * Tensor<2, dim, SimdArray<Number>>(s.S) +
+                                         s.F * Tensor<2, dim, SimdArray<Number>>(dS)),
                                 q);
           }
         phi.integrate(EvaluationFlags::gradients);
       }
 
-      void apply(const MatrixFree<dim, Number> &data, VectorType &dst, const VectorType &src,
+      void apply(const MatrixFree<dim, Number, SimdArray<Number>> &data, VectorType &dst, const VectorType &src,
                  const std::pair<unsigned int, unsigned int> &range, const AlignedVector<State> &state,
                  const bool plain) const
       {
@@ -68,18 +68,18 @@ namespace compliant::fast_solver
           }
       }
 
-      void diagonal(const MatrixFree<dim, Number> &data, VectorType &diagonal, const AlignedVector<State> &state) const
+      void diagonal(const MatrixFree<dim, Number, SimdArray<Number>> &data, VectorType &diagonal, const AlignedVector<State> &state) const
       {
-        MatrixFreeTools::compute_diagonal<dim, degree, n_q, dim, Number, VectorizedArray<Number>>(
+        MatrixFreeTools::compute_diagonal<dim, degree, n_q, dim, Number, SimdArray<Number>>(
           data, diagonal,
           [&](Evaluation &phi) { at_quadrature_points(phi, &state[phi.get_current_cell_index() * phi.n_q_points]); },
           0, quad);
       }
 
-      void matrix(const MatrixFree<dim, Number> &data, const AffineConstraints<Number> &constraints,
+      void matrix(const MatrixFree<dim, Number, SimdArray<Number>> &data, const AffineConstraints<Number> &constraints,
                   PETScWrappers::MPI::SparseMatrix &matrix, const AlignedVector<State> &state) const
       {
-        MatrixFreeTools::compute_matrix<dim, degree, n_q, dim, Number, VectorizedArray<Number>>(
+        MatrixFreeTools::compute_matrix<dim, degree, n_q, dim, Number, SimdArray<Number>>(
           data, constraints, matrix,
           [&](Evaluation &phi) { at_quadrature_points(phi, &state[phi.get_current_cell_index() * phi.n_q_points]); },
           0, quad);
@@ -164,7 +164,7 @@ namespace compliant::fast_solver
                                                  const bool plain) const
   {
     this->data->template cell_loop<VectorType, VectorType>(
-      [&](const MatrixFree<dim, Number> &mf, VectorType &d, const VectorType &s,
+      [&](const MatrixFree<dim, Number, SimdArray<Number>> &mf, VectorType &d, const VectorType &s,
           const std::pair<unsigned int, unsigned int> &range) {
         for_each_rule<tangent_detail::Kernel, dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
           kernel.apply(mf, d, s, range, state[kernel.quad], plain);
