@@ -129,10 +129,10 @@ namespace compliant
                                                       double lambda, bool matrix_free) const;
 
     // The duals of goal-oriented refinement at the current (converged) state (ladder/
-    // adaptive_refinement.h). The solver of K_T z = j: the tangent assembled and factored once
-    // (MUMPS, LU), `homogeneous` its constraints held at zero; rows they hold are zeroed in j and
-    // z comes ghosted. The tangent is symmetric unless a follower pressure or a 3D rigid moment
-    // acts; then this solves with it, not its transpose (an indicator's approximation).
+    // adaptive_refinement.h). The solver of K_T^T z = j: the tangent assembled and factored once
+    // (MUMPS, LU; the transposed solve reuses the factors), `homogeneous` its constraints held at
+    // zero; rows they hold are zeroed in j and z comes ghosted. The tangent is unsymmetric where a
+    // follower pressure or a 3D rigid moment acts: the adjoint needs its transpose.
     // `homogeneous` must outlive the returned function.
     std::function<dealii::PETScWrappers::MPI::Vector(dealii::PETScWrappers::MPI::Vector)>
     tangent_dual_solver(dealii::AffineConstraints<double> &homogeneous) const;

@@ -151,7 +151,7 @@ namespace compliant
           j(i) = 0;
       j.compress(VectorOperation::insert);
       PETScWrappers::MPI::Vector z(locally_owned_dofs, communicator);
-      factor->solve(z, j);
+      factor->solve_transpose(z, j); // K_T^T z = j: the tangent is unsymmetric under follower loads
       held->distribute(z);
       PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
       ghosted = z;

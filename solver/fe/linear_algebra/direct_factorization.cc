@@ -73,6 +73,16 @@ namespace compliant
       throw std::runtime_error("the direct solve failed (PETSc reason " + std::to_string(reason) + ")");
   }
 
+  void DirectFactorization::solve_transpose(dealii::PETScWrappers::MPI::Vector       &x,
+                                            const dealii::PETScWrappers::MPI::Vector &b) const
+  {
+    check(KSPSolveTranspose(ksp, static_cast<Vec>(b), static_cast<Vec>(x)), "KSPSolveTranspose");
+    KSPConvergedReason reason;
+    KSPGetConvergedReason(ksp, &reason);
+    if (reason < 0)
+      throw std::runtime_error("the transposed direct solve failed (PETSc reason " + std::to_string(reason) + ")");
+  }
+
   unsigned int DirectFactorization::negative_eigenvalues() const
   {
     if (!symmetric)

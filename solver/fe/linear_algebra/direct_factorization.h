@@ -26,6 +26,8 @@ namespace compliant
     void solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const;
     // The same on bare PETSc vectors (a preconditioner's coarse level); x and b distinct.
     void solve(Vec x, Vec b) const;
+    // x = A^-T b from the same factors (an adjoint: the dual of an unsymmetric tangent).
+    void solve_transpose(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const;
     // Negative eigenvalues of the factored matrix; only for a symmetric one.
     unsigned int negative_eigenvalues() const;
 
