@@ -48,6 +48,7 @@ BENCHMARKS = {
                  "buckling_speed.{md,csv}", 20),
     "memory": ("memory_per_rank.py", [], ["--n", "4", "--ranks", "1,2"], [], "memory_per_rank.{md,csv}", 10),
     "study": ("study_speed.py", ["--points", "200"], ["--points", "20"], [], "study_speed.md", 5),
+    "simd": ("simd_speed.py", [], ["--repeat", "1"], [], "simd_speed.md", 25),
 }
 
 
