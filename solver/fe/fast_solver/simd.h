@@ -6,8 +6,11 @@
 // vectorization.h define its AVX classes (VectorizedArray<double, 4>), while the default width
 // stays the library's 1: numbers.h fixes the default before the switch, so every class compiled
 // into libdeal.ii keeps its layout. The kernels then take SimdArray<Number> explicitly, and
-// MatrixFree is instantiated for it here (fast_solver/matrix_free_simd.cc).
-// Measured on the 3D Q2 cantilever (317k DoFs, 2 ranks): see fast_solver/README or the note.
+// MatrixFree is instantiated for them (fast_solver/matrix_free_simd*.cc). After vectorization.h
+// the macro is 0 again: the two matrix-free headers that read it later then take their per-lane
+// loops, right for any width. (Its SIMDComparison enum gets AVX's values here and 0-5 in the
+// library; it only appears as a template argument, so the symbols differ and never meet.)
+// Measured: README, Speed (cases/benchmarks/simd_speed.py).
 #pragma once
 
 #include <deal.II/base/config.h>
