@@ -2,6 +2,7 @@
 // the same factors, on an unsymmetric matrix (the dual of an unsymmetric Newton tangent needs the
 // transpose). Each answer is checked by its residual; the two differ, so a solve that ignored the
 // transpose fails.
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
@@ -39,12 +40,14 @@ namespace
 TEST(DirectFactorization, SolvesWithTheMatrixAndItsTranspose)
 {
   const unsigned int n = 40;
-  IndexSet           owned(n);
-  owned.add_range(0, n); // one rank
+  const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const unsigned int size = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  IndexSet           owned(n); // rows cut in blocks over the ranks (the ctest runs 1 and 2)
+  owned.add_range(rank * n / size, (rank + 1) * n / size);
   PETScWrappers::MPI::SparseMatrix a;
   fill(a, owned, n);
   PETScWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b), y(b), residual(b);
-  for (unsigned int i = 0; i < n; ++i)
+  for (const auto i : owned)
     b(i) = std::sin(1. + i);
   b.compress(VectorOperation::insert);
 
