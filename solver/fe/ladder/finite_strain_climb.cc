@@ -51,6 +51,7 @@ namespace compliant
             }
         CaseParameters nonlinear     = *chosen_parameters;
         nonlinear.analysis           = "nonlinear static";
+        nonlinear.pressure           = p.pressure; // the case's own (linear rungs may carry the follower's)
         nonlinear.element_degree     = plan.degree;
         nonlinear.global_refinements = r;
         if (adaptive)
