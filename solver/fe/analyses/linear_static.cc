@@ -15,8 +15,13 @@ namespace compliant
     template <int dim>
     int run(const RunContext &context)
     {
-      const auto &p     = context.parameters;
-      auto        model = solve_linear_static_model<dim>(context, p);
+      CaseParameters p           = context.parameters;
+      bool           substituted = false;
+      p.pressure                 = linear_pressure(context.parameters, context.prm, substituted);
+      if (substituted && dealii::Utilities::MPI::this_mpi_process(context.communicator) == 0)
+        std::cout << "Loads: Finite strain/Follower pressure on the undeformed boundary (" << p.pressure
+                  << "), its small-deformation limit in a linear analysis" << std::endl;
+      auto model = solve_linear_static_model<dim>(context, p);
       if (model.stopped_for_check)
         return 0;
       const auto &problem = *model.problem;

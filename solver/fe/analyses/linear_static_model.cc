@@ -9,6 +9,22 @@
 
 namespace compliant
 {
+  std::string linear_pressure(const CaseParameters &parameters, const dealii::ParameterHandler &prm,
+                              bool &substituted)
+  {
+    const auto blank = [](const std::string &text) { return text.find_first_not_of(" \t") == std::string::npos; };
+    std::string follower;
+    try
+      {
+        follower = prm.get(std::vector<std::string>{"Finite strain"}, "Follower pressure");
+      }
+    catch (...) // not declared for this analysis
+      {
+      }
+    substituted = blank(parameters.pressure) && !blank(follower);
+    return substituted ? follower : parameters.pressure;
+  }
+
   template <int dim>
   LinearStaticModel<dim> solve_linear_static_model(const RunContext &context, const CaseParameters &p,
                                                    const bool keep_matrix,

@@ -25,6 +25,13 @@ namespace compliant
   // stiffness matrix is assembled and kept (no matrix-free solve), for analyses that go on with it.
   // before_solve, if given, sees the assembled problem just before its solve (the error
   // estimates set a warm start there).
+  // The Loads/Pressure a linear model takes: the case's own, or, where it gives none and
+  // Finite strain/Follower pressure is set, that pressure on the undeformed boundary (its
+  // small-deformation limit: a linear run of a case loaded by a follower pressure alone would
+  // otherwise see no load). `substituted` says which.
+  std::string linear_pressure(const CaseParameters &parameters, const dealii::ParameterHandler &prm,
+                              bool &substituted);
+
   template <int dim>
   LinearStaticModel<dim> solve_linear_static_model(
     const RunContext &context, const CaseParameters &parameters, bool keep_matrix = false,

@@ -25,19 +25,6 @@ namespace compliant
 {
   namespace
   {
-    // The case's Finite strain/Follower pressure ('' where none or not declared).
-    std::string follower_pressure_of(const dealii::ParameterHandler &prm)
-    {
-      try
-        {
-          return prm.get(std::vector<std::string>{"Finite strain"}, "Follower pressure");
-        }
-      catch (...)
-        {
-          return "";
-        }
-    }
-
     // Largest rotation of material lines, |skew(grad u)| (radians, infinitesimal), over the
     // quadrature points of every cell: what makes a linear answer wrong at order theta^2.
     template <int dim>
@@ -176,15 +163,11 @@ namespace compliant
         // A follower pressure loads the finite-strain rungs; its small-deformation limit, the same
         // pressure on the undeformed boundary, loads the linear ones (else they would see no load
         // and find the rotations small).
-        if (const std::string follower = follower_pressure_of(context.prm);
-            p.pressure.find_first_not_of(" \t") == std::string::npos &&
-            follower.find_first_not_of(" \t") != std::string::npos)
-          {
-            rung_parameters->pressure = follower;
-            if (root && k == 0)
-              std::cout << "  linear rungs: Finite strain/Follower pressure on the undeformed boundary ("
-                        << follower << "), its small-deformation limit" << std::endl;
-          }
+        bool substituted          = false;
+        rung_parameters->pressure = linear_pressure(p, context.prm, substituted);
+        if (substituted && root && k == 0)
+          std::cout << "  linear rungs: Finite strain/Follower pressure on the undeformed boundary ("
+                    << rung_parameters->pressure << "), its small-deformation limit" << std::endl;
         rung_parameters->element_degree = plan.degree;
         if (target.adaptive)
           {
