@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 121 inputs.
-README_CENSUS = {"refused with exit 2": 110, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
+# The README's census of the corpus: 122 inputs.
+README_CENSUS = {"refused with exit 2": 111, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -195,6 +195,11 @@ solver_case("unterminated subsection", [scratch_file("open.prm", base + "\nsubse
 solver_case("CRLF line endings work", [scratch_file("crlf.prm", base.replace("\n", "\r\n")), "--check"],
             ["is valid", "140 cells, 1314 DoFs"], code=0)
 solver_case("UTF-8 BOM works", [scratch_file("bom.prm", "\ufeff" + base), "--check"], ["is valid", "140 cells, 1314 DoFs"], code=0)
+# A target on a model without load: the rungs are all zero, and adaptive refinement flagged no cell
+# (it ended on an internal message, exit 1).
+solver_case("target on an unloaded model", [hinge, S, "Boundary conditions/Rotation=", S, "Target/Relative error=1",
+                                             S, "Target/Refinement=adaptive", S, "Target/Quantities=strain_energy"],
+            ["flexure_hinge.prm", "no load", "Target"])
 solver_case("missing case file", [os.path.join(scratch, "absent.prm")], ["absent.prm"])
 solver_case("directory as case file", [scratch], [scratch])
 solver_case("--set without its section", [hinge, S, "Materials=*: steel"], ["Materials"])

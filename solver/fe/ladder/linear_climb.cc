@@ -201,6 +201,11 @@ namespace compliant
         last_cells          = model.problem->triangulation.n_global_active_cells();
         if (model.stopped_for_check)
           return 0;
+        // Nothing to converge: every refinement would give the same zero (and adaptive indicators flag no cell).
+        if (k == 0 && model.problem->solution.linfty_norm() == 0.)
+          throw InputError("case file '" + p.case_file + "': the model carries no load (the displacement is zero "
+                           "everywhere: no Loads, no prescribed Boundary conditions/Displacement or Rotation, "
+                           "no follower pressure); a Target needs a loaded model");
         const bool hypercubes = model.problem->triangulation.all_reference_cells_are_hyper_cube();
         if (target.adaptive && !hypercubes)
           throw InputError("case file '" + p.case_file + "', Target/Refinement: adaptive refinement "
