@@ -9,6 +9,7 @@
 
 #include "finite_strain/finite_strain_problem.h"
 #include "finite_strain/hyperelastic_law.h"
+#include "linear_algebra/mpi_transport.h"
 #include "mesh/gmsh_geometry.h"
 
 #include <gtest/gtest.h>
@@ -229,6 +230,7 @@ TEST(FiniteStrainTangent, ReducedIntegrationIsConsistent)
 
 int main(int argc, char **argv)
 {
+  compliant::prefer_shared_memory_transport();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
