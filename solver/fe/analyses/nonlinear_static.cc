@@ -153,16 +153,17 @@ namespace compliant
       residual *= -1; // f_ext - f_int
       const auto  result = problem.contact->result(problem.solution, residual, problem.load_factor);
       const char *axes[] = {"x", "y", "z"};
+      const auto  names  = problem.contact->names(); // the obstacles', then the pairs'
       for (unsigned int o = 0; o < result.obstacles.size(); ++o)
         {
-          const std::string name = problem.contact->obstacles[o].name;
+          const std::string name = names[o];
           const auto       &r    = result.obstacles[o];
           for (unsigned int d = 0; d < dim; ++d)
             q["contact_force_" + name + "_" + axes[d]] = r.force[d];
           for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
             q["contact_moment_" + name + "_" + axes[d]] = r.moment[d];
           q["contact_nodes_" + name] = r.nodes;
-          if (problem.contact->obstacles[o].friction > 0)
+          if (o < problem.contact->obstacles.size() && problem.contact->obstacles[o].friction > 0)
             q["contact_sticking_nodes_" + name] = r.sticking, q["contact_slipping_nodes_" + name] = r.slipping;
         }
       q["contact_active_nodes"]          = result.active_nodes;
@@ -385,7 +386,7 @@ namespace compliant
           if (settings.arc_length)
             problem->require_load_driven();
           if (settings.arc_length && problem->contact)
-            throw std::invalid_argument("Contact/Obstacles: contact is followed by load steps, not yet by "
+            throw std::invalid_argument("Contact: contact is followed by load steps, not yet by "
                                         "Finite strain/Path = arc length");
         }
       catch (const std::invalid_argument &e)

@@ -145,10 +145,12 @@ namespace compliant
 
   // The matrix of a problem with rigid boundaries: the pattern of `constraints` (which name every
   // candidate master, RigidBoundary::add_constraints with for_sparsity), the rows of the master
-  // candidates and their couplings (add_candidate_couplings).
+  // candidates and their couplings (add_candidate_couplings). keep_constrained: constrained rows
+  // keep their cells' couplings too (a contact node held now may be freed later; PETSc drops
+  // entries outside the pattern without a word).
   template <int dim>
   void reinit_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix, const dealii::DoFHandler<dim> &dofs,
                      const dealii::AffineConstraints<double> &constraints,
                      const std::vector<RigidBoundary<dim>> &rigid_boundaries, const dealii::IndexSet &owned,
-                     const dealii::IndexSet &relevant, MPI_Comm communicator);
+                     const dealii::IndexSet &relevant, MPI_Comm communicator, bool keep_constrained = false);
 } // namespace compliant

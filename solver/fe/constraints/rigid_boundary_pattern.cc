@@ -44,14 +44,25 @@ namespace compliant
   template <int dim>
   void reinit_matrix(PETScWrappers::MPI::SparseMatrix &matrix, const DoFHandler<dim> &dofs,
                      const AffineConstraints<double> &constraints, const std::vector<RigidBoundary<dim>> &rigid_boundaries,
-                     const IndexSet &owned, const IndexSet &relevant, MPI_Comm communicator)
+                     const IndexSet &owned, const IndexSet &relevant, MPI_Comm communicator,
+                     const bool keep_constrained)
   {
     // Rows of a rigid boundary's masters get entries from every cell on that boundary.
     IndexSet rows = relevant;
     for (const auto &rigid : rigid_boundaries)
       rows.add_indices(rigid.master_candidates(dofs.n_dofs()));
+    // So do the DoFs a constraint line refers to beyond this rank's (contact between boundaries:
+    // a master surface's nodes anywhere).
+    std::vector<types::global_dof_index> referred;
+    for (const auto &line : constraints.get_lines())
+      for (const auto &entry : line.entries)
+        if (!rows.is_element(entry.first))
+          referred.push_back(entry.first);
+    std::sort(referred.begin(), referred.end());
+    referred.erase(std::unique(referred.begin(), referred.end()), referred.end());
+    rows.add_indices(referred.begin(), referred.end());
     DynamicSparsityPattern pattern(rows);
-    DoFTools::make_sparsity_pattern(dofs, pattern, constraints, false);
+    DoFTools::make_sparsity_pattern(dofs, pattern, constraints, keep_constrained);
     for (const auto &rigid : rigid_boundaries)
       rigid.add_candidate_couplings(dofs, pattern);
     SparsityTools::distribute_sparsity_pattern(pattern, owned, communicator, rows);
@@ -61,7 +72,7 @@ namespace compliant
   template void RigidBoundary<2>::add_candidate_couplings(const DoFHandler<2> &, DynamicSparsityPattern &) const;
   template void RigidBoundary<3>::add_candidate_couplings(const DoFHandler<3> &, DynamicSparsityPattern &) const;
   template void reinit_matrix(PETScWrappers::MPI::SparseMatrix &, const DoFHandler<2> &, const AffineConstraints<double> &,
-                              const std::vector<RigidBoundary<2>> &, const IndexSet &, const IndexSet &, MPI_Comm);
+                              const std::vector<RigidBoundary<2>> &, const IndexSet &, const IndexSet &, MPI_Comm, bool);
   template void reinit_matrix(PETScWrappers::MPI::SparseMatrix &, const DoFHandler<3> &, const AffineConstraints<double> &,
-                              const std::vector<RigidBoundary<3>> &, const IndexSet &, const IndexSet &, MPI_Comm);
+                              const std::vector<RigidBoundary<3>> &, const IndexSet &, const IndexSet &, MPI_Comm, bool);
 } // namespace compliant

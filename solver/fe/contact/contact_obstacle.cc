@@ -37,6 +37,17 @@ namespace compliant
     prm.declare_entry("Boundaries", "", Patterns::Anything(),
                       "The part's boundaries that may touch every obstacle: 'bottom, side' (commas, "
                       "spaces or semicolons between names).");
+    prm.declare_entry(
+      "Pairs", "", Patterns::Anything(),
+      "Boundaries of the part that may touch each other (nonlinear static analyses, quadrilateral "
+      "and hexahedral meshes, frictionless): 'stop: slave=tip, master=stop_face; fold: slave=a b, "
+      "master=c'. The slave boundary's nodes are held outside the master surface by the same "
+      "active set as the obstacles, in mortar form (each node's gap and constraint weighted over "
+      "its faces, the master's nodes sharing its force), so a uniform pressure passes exactly "
+      "across a flat contact also between meshes that do not match. The two bodies of a pair may "
+      "be separate parts of one mesh, or one part touching itself. Gives contact_force_<name>_<x|y|z> "
+      "(on the slave side; the master carries the opposite), contact_moment_<name>_<z|x y z> and "
+      "contact_nodes_<name>, and rows of contact.csv.");
     prm.declare_entry("Penetration tolerance", "1e-8", Patterns::Double(0, 1e-2),
                       "A load step converges only when no contact node lies deeper than this "
                       "fraction of the part's size (its bounding-box diagonal) inside an "
@@ -49,6 +60,7 @@ namespace compliant
     ContactSettings s;
     s.obstacles  = prm.get({"Contact"}, "Obstacles");
     s.boundaries = prm.get({"Contact"}, "Boundaries");
+    s.pairs      = prm.get({"Contact"}, "Pairs");
     s.tolerance  = std::stod(prm.get({"Contact"}, "Penetration tolerance"));
     return s;
   }

@@ -20,8 +20,13 @@ namespace compliant
   {
     std::string obstacles;  // 'name: plane, point=..., normal=...; ...'
     std::string boundaries; // the part's boundaries that may touch every obstacle
+    std::string pairs;      // 'name: slave=..., master=...; ...': boundaries of the part touching each other
     double      tolerance = 1e-8; // largest penetration, as a fraction of the part's size
-    bool        empty() const { return obstacles.find_first_not_of(" \t") == std::string::npos; }
+    bool        empty() const
+    {
+      return obstacles.find_first_not_of(" \t") == std::string::npos &&
+             pairs.find_first_not_of(" \t") == std::string::npos;
+    }
   };
 
   // Subsection Contact (nonlinear static analyses).

@@ -227,6 +227,8 @@ namespace compliant
     update.pulling   = Utilities::MPI::sum(update.pulling, communicator);
     update.violation = Utilities::MPI::max(update.violation, communicator);
     share_active_set();
+    if (pairs)
+      pairs->update_active_set(u, residual, release, force_tolerance, update.changes, update.pulling, update.violation);
     return update;
   }
 
@@ -311,6 +313,20 @@ namespace compliant
               constraints.add_entry(node.dofs[k], node.dofs[d], -n[d] / n[k]);
           constraints.set_inhomogeneity(node.dofs[k], homogeneous ? 0. : -gap / n[k]);
         }
+    if (pairs)
+      pairs->add_constraints(constraints, u, homogeneous);
+  }
+
+  template <int dim>
+  std::vector<std::string> ContactSet<dim>::names() const
+  {
+    std::vector<std::string> all;
+    for (const auto &o : obstacles)
+      all.push_back(o.name);
+    if (pairs)
+      for (const auto &p : pairs->pairs())
+        all.push_back(p.name);
+    return all;
   }
 
   template <int dim>
@@ -349,6 +365,16 @@ namespace compliant
       }
     result.active_nodes    = Utilities::MPI::sum(result.active_nodes, communicator);
     result.max_penetration = std::max(0., Utilities::MPI::max(result.max_penetration, communicator));
+    if (pairs)
+      for (const auto &pair : pairs->result(u, residual, result.max_penetration))
+        {
+          ObstacleResult r;
+          r.force  = pair.force;
+          r.moment = pair.moment;
+          r.nodes  = pair.nodes;
+          result.active_nodes += pair.nodes;
+          result.obstacles.push_back(r);
+        }
     return result;
   }
 
@@ -364,6 +390,8 @@ namespace compliant
           pressure(node.dofs[0]) = node.area > 0 ? state.force / node.area : 0.;
           gap(node.dofs[0])      = state.gap;
         }
+    if (pairs)
+      pairs->nodal_fields(u, residual, pressure, gap);
   }
 
   template <int dim>
@@ -401,6 +429,8 @@ namespace compliant
           local.insert(local.end(), {state.gap, state.force, node.area, node.area > 0 ? state.force / node.area : 0.,
                                      double(node.active)});
         }
+    if (pairs)
+      pairs->append_rows(u, residual, obstacles.size(), local);
     const auto parts = Utilities::MPI::gather(communicator, local);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
@@ -409,8 +439,9 @@ namespace compliant
       for (std::size_t k = 0; k + record <= part.size(); k += record)
         rows.emplace_back(part.begin() + k, part.begin() + k + record);
     std::sort(rows.begin(), rows.end());
-    std::ofstream out(file);
-    const char   *axes[] = {"x", "y", "z"};
+    std::ofstream  out(file);
+    const char    *axes[]    = {"x", "y", "z"};
+    const auto     all_names = names();
     for (unsigned int d = 0; d < dim; ++d)
       out << "reference_" << axes[d] << ",";
     for (unsigned int d = 0; d < dim; ++d)
@@ -420,7 +451,7 @@ namespace compliant
       {
         for (unsigned int k = 0; k + 1 < record; ++k)
           out << row[k] << ",";
-        out << (row.back() >= 0 ? obstacles[static_cast<unsigned int>(row.back())].name : std::string()) << "\n";
+        out << (row.back() >= 0 ? all_names[static_cast<unsigned int>(row.back())] : std::string()) << "\n";
       }
   }
 

@@ -28,8 +28,10 @@
 #include <deal.II/lac/petsc_vector.h>
 
 #include "contact/contact_obstacle.h"
+#include "contact/contact_pairs.h"
 
 #include <array>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -136,10 +138,17 @@ namespace compliant
     {
       for (auto &node : nodes)
         node.active = -1, node.slip = false, node.step_anchor = false;
+      if (pairs)
+        pairs->release_all();
     }
 
     const std::vector<Obstacle<dim>> obstacles;
     double                           tolerance = 0; // absolute, a length
+    // Boundaries of the part touching each other (Contact/Pairs), if any: every call above
+    // covers them too; their results follow the obstacles' (names()).
+    std::unique_ptr<ContactPairs<dim>> pairs;
+    // The obstacles' names, then the pairs'.
+    std::vector<std::string> names() const;
 
   private:
     struct Node

@@ -253,6 +253,36 @@ namespace compliant
     contact = std::make_unique<ContactSet<dim>>(std::move(obstacles), rigid_ids, supported_ids, dof_handler, *mapping,
                                                 *face_quadrature, locally_owned_dofs, locally_relevant_dofs, thickness,
                                                 settings.contact.tolerance, communicator);
+    const auto pairs = parse_contact_pairs(settings.contact.pairs, geometry.boundary_ids);
+    for (const auto &pair : pairs)
+      for (const auto &obstacle : contact->obstacles)
+        if (obstacle.name == pair.name)
+          throw std::invalid_argument("Contact/Pairs: pair '" + pair.name + "' has the name of an obstacle of "
+                                      "Contact/Obstacles; their quantities would collide");
+    if (!pairs.empty())
+      contact->pairs = std::make_unique<ContactPairs<dim>>(pairs, rigid_ids, dof_handler, *mapping, locally_owned_dofs,
+                                                           locally_relevant_dofs, thickness, contact->tolerance,
+                                                           communicator);
+  }
+
+  template <int dim>
+  void FiniteStrainProblem<dim>::cover_contact_couplings(const AffineConstraints<double> &constraints)
+  {
+    if (!contact || !contact->pairs)
+      return;
+    std::vector<std::pair<types::global_dof_index, types::global_dof_index>> needed;
+    for (const auto &line : constraints.get_lines())
+      for (const auto &entry : line.entries)
+        needed.emplace_back(line.index, entry.first);
+    std::sort(needed.begin(), needed.end());
+    const bool covered = std::includes(contact_couplings.begin(), contact_couplings.end(), needed.begin(), needed.end());
+    if (Utilities::MPI::min(covered ? 1 : 0, communicator) == 1)
+      return;
+    reinit_matrix(tangent, dof_handler, constraints, rigid_boundaries, locally_owned_dofs, locally_relevant_dofs,
+                  communicator, true);
+    contact_couplings = needed;
+    if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(communicator) == 0)
+      std::cout << "    contact pairs: tangent pattern rebuilt (" << needed.size() << " couplings)" << std::endl;
   }
 
   template <int dim>

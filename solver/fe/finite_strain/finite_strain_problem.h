@@ -104,6 +104,10 @@ namespace compliant
     // Contact with friction: back to the contact state saved by start_contact_step (after a
     // failed Newton or a rejected step).
     void restore_contact_state();
+    // Contact between boundaries (Contact/Pairs): a held node's constraint reaches the master
+    // surface's nodes it faces now, so the tangent's pattern is rebuilt whenever the constraints
+    // refer to a coupling it lacks. Collective.
+    void cover_contact_couplings(const dealii::AffineConstraints<double> &constraints);
 
     // Negative eigenvalues of the condensed tangent stiffness at the current state (0: stable
     // equilibrium under the applied loads; a limit point or bifurcation has been passed
@@ -166,6 +170,7 @@ namespace compliant
     // Contact with rigid obstacles (Contact/Obstacles); null without obstacles. Its active set is
     // chosen inside Newton (FiniteStrainNewtonSystem::linearize) and held by make_constraints.
     std::unique_ptr<ContactSet<dim>>   contact;
+    std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> contact_couplings;
     unsigned int                       total_linear_solves = 0;
     double                             tangent_assembly_seconds = 0, linear_solve_seconds = 0;
     double                             contact_seconds = 0; // active-set updates (a residual each)
