@@ -4,7 +4,7 @@ references that do not come from the contact code: the uniform state of the cont
 Hertz's closed form, the same contact solved against a rigid plane (Contact/Obstacles), the
 equilibrium of the reactions, and the same run on other rank counts.
 
-    contact_pair_checks.py patch | hertz | ranks | inputs
+    contact_pair_checks.py patch | hertz | fork | ranks | inputs
 """
 import math
 import os
@@ -17,12 +17,13 @@ cases = os.path.join(here, "..", "..", "cases")
 sys.path.insert(0, os.path.join(here, "..", "..", "postproc"))
 sys.path.insert(0, here)
 from study import mpi_env, solver_path  # noqa: E402
-from case_checks import check, finish, unknown_mode  # noqa: E402
+from case_checks import check, finish, readme_figure, unknown_mode  # noqa: E402
 from contact_common import run_with_files, no_penetration, hertz_fit  # noqa: E402
 
 PATCH = os.path.join(cases, "contact", "patch_blocks.prm")
 TWO_CYLINDERS = os.path.join(cases, "contact", "hertz_two_cylinders.prm")
 HERTZ = os.path.join(cases, "contact", "hertz_cylinder.prm")
+FORK = os.path.join(cases, "contact", "fork_closing.prm")
 H, DELTA = 0.5, 1e-6
 SAME = "Material/Materials=*: steel, E=1000, nu=0.3"
 SUPPORTS_3D = ("Boundary conditions/Displacement=base: y=0; lower_left: x=0; upper_left: x=0; "
@@ -83,6 +84,8 @@ if mode == "patch":
           % (spreads[0], DELTA / H))
     check(spreads[1] <= 0.2 * spreads[0], "two materials: spread %.2e at a ten times smaller push (%.2e there)"
           % (spreads[1], spreads[0]))
+    readme_figure(spreads[0], "2.5e-7", "two materials: spread at a push of 1e-6")
+    readme_figure(spreads[1], "2.7e-8", "two materials: spread at a push of 1e-7")
 elif mode == "hertz":
     # Two equal cylinders pressed together: by symmetry their contact stays on y = 0, the rigid
     # plane of hertz_cylinder.prm, so the pair must carry the obstacle run's force and pressures;
@@ -99,17 +102,46 @@ elif mode == "hertz":
           (P, 2 * q_plane["contact_force_ground_y"], held, b, b_h, 100 * (b / b_h - 1), p0, p_center, p0_h,
            100 * (p0 / p0_h - 1), 100 * (p_center / p0_h - 1), [r["newton_iterations"] for r in curve],
            [r["newton_iterations"] for r in curve_plane]))
-    check(abs(q["contact_force_cylinders_y"] / q_plane["contact_force_ground_y"] - 1) <= 1e-3,
-          "the pair carries the rigid plane's force to 0.1 %")
+    # The two discs' meshes are mirror images (gmsh meshes each alike): the same force to 8 digits.
+    check(abs(q["contact_force_cylinders_y"] / q_plane["contact_force_ground_y"] - 1) <= 1e-7,
+          "the pair carries the rigid plane's force to 8 digits")
     for name, value, reference in (("half-width b", b, b_h), ("peak pressure p0 (fitted)", p0, p0_h),
                                    ("pressure at x = 0", p_center, p0_h)):
         check(abs(value / reference - 1) < 0.02, "%s within 2 %% of Hertz (%+.2f %%)" % (name, 100 * (value / reference - 1)))
+    # The README's figures (Contact between boundaries), to 3 units of their last digit.
+    for value, reference, figure, name in ((b, b_h, "-0.30", "b"), (p0, p0_h, "+0.24", "p0 fitted"),
+                                           (p_center, p0_h, "+0.31", "p at x = 0")):
+        readme_figure(value / reference - 1, figure, "two cylinders: %s against Hertz, %%" % name, scale=100)
     for side in ("top", "bottom"):
         check(abs(abs(q["reaction_force_%s_y" % side]) - P / 2) <= 1e-8 * P,
               "the %s's reaction %.10g balances the contact force %.10g" % (side, q["reaction_force_%s_y" % side], P / 2))
     check(abs(q["contact_force_cylinders_x"]) <= 1e-4 * P, "no tangential force (frictionless): %.2g" %
           q["contact_force_cylinders_x"])
     no_penetration(q, nodes, "two cylinders")
+elif mode == "fork":
+    # A one-piece fork closing onto itself: the tips' compliances without the contact (a tenth of
+    # the load, one step: the linear range) give R = (F - g / (c - d)) / 2 and the lower tip's
+    # deflection c R + d (F - R), to the 1 % the tip's load spreading and finite strain allow.
+    F, g = 0.02, 0.32
+    free, _, _ = run_with_files(FORK, ["Contact/Pairs=", "Finite strain/Initial step=1",
+                                       "Loads/Traction=upper_tip: 0 -%g/h" % (F / 10)])
+    c = -free["mean_displacement_upper_tip_y"] / (F / 10)
+    d = -free["mean_displacement_lower_tip_y"] / (F / 10)
+    q, curve, nodes = run_with_files(FORK)
+    R = -q["contact_force_slot_y"]  # on the lower prong (the slave): downwards
+    R_expected = (F - g / (c - d)) / 2
+    lower = -q["mean_displacement_lower_tip_y"]
+    lower_expected = c * R_expected + d * (F - R_expected)
+    print("fork: c %.5g, d %.5g; R %.7g (compliances %.7g, %+.3f %%; beam theory %.4g), lower tip %.6g (%.6g, %+.3f %%); "
+          "Newton %d over %d steps" % (c, d, R, R_expected, 100 * (R / R_expected - 1), (F - 3 * 1000 / 12 / 20 ** 3 * g) / 2,
+                                       lower, lower_expected, 100 * (lower / lower_expected - 1),
+                                       sum(int(r["newton_iterations"]) for r in curve), len(curve)))
+    check(abs(R / R_expected - 1) <= 0.01, "contact force within 1 % of the compliances' prediction")
+    readme_figure(R / R_expected - 1, "+0.007", "fork: contact force against the compliances, %", scale=100)
+    readme_figure(lower / lower_expected - 1, "-0.043", "fork: lower tip against the compliances, %", scale=100)
+    check(abs(lower / lower_expected - 1) <= 0.01, "lower tip deflection within 1 % of the prediction")
+    check(abs(q["reaction_force_root_y"] - F) <= 1e-8 * F, "the root carries the load %.10g" % q["reaction_force_root_y"])
+    no_penetration(q, nodes, "fork")
 elif mode == "ranks":
     # The same answers on 1, 2 and 3 ranks (the master surface is known on every rank).
     for label, case, sets, key in (("3D patch", PATCH, [SAME, "Model=3d", "Geometry/Parameters/depth=0.4", SUPPORTS_3D],
@@ -139,5 +171,5 @@ elif mode == "inputs":
               "'%s': exit %d, '%s'" % (setting, proc.returncode, message[:200]))
         check(not os.path.exists(out), "'%s': no output directory" % setting)
 else:
-    unknown_mode(mode, ("patch", "hertz", "ranks", "inputs"))
+    unknown_mode(mode, ("patch", "hertz", "fork", "ranks", "inputs"))
 finish()

@@ -386,7 +386,7 @@ namespace compliant
           if (settings.arc_length)
             problem->require_load_driven();
           if (settings.arc_length && problem->contact)
-            throw std::invalid_argument("Contact: contact is followed by load steps, not yet by "
+            throw std::invalid_argument("Contact/Obstacles, Contact/Pairs: contact is followed by load steps, not yet by "
                                         "Finite strain/Path = arc length");
         }
       catch (const std::invalid_argument &e)

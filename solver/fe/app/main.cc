@@ -108,7 +108,7 @@ namespace
     if (p.case_file.empty())
       throw InputError("no case file given (try --help)");
     if (p.analysis != "nonlinear static" && !read_contact_settings(prm).empty())
-      throw InputError("case file '" + p.case_file + "', Contact: contact (Obstacles, Pairs) is solved by nonlinear static "
+      throw InputError("case file '" + p.case_file + "', Contact/Obstacles, Contact/Pairs: contact is solved by nonlinear static "
                        "analyses, not by a " + p.analysis + " analysis");
     check_output_directory(p, comm);
     const MeshedGeometry geometry = mesh_case_geometry(p, comm);

@@ -175,6 +175,45 @@ namespace compliant
           }
     }
 
+    // The dual basis psi_i = sum_l A_il N_l of a slave face, A = D M^-1 (M the face's mass
+    // matrix, D its row sums): int psi_i N_l = delta_il int N_i, so a node's weighted gap moves
+    // with that node alone, and sum_i psi_i = 1 (Wohlmuth 2000; Popp et al. 2010).
+    template <int dim>
+    FullMatrix<double> dual_basis(const ContactSurface<dim> &slave, const typename ContactSurface<dim>::Face &face,
+                                  const unsigned int n_gauss)
+    {
+      const unsigned int                       n = face.nodes.size();
+      FullMatrix<double>                       mass(n, n), dual(n, n);
+      std::vector<std::array<double, dim - 1>> full, points;
+      std::vector<double>                      weights, values;
+      if constexpr (dim == 2)
+        full = {{0.}, {1.}};
+      else
+        full = {{0., 0.}, {1., 0.}, {1., 1.}, {0., 1.}};
+      region_rule<dim>(full, n_gauss, points, weights);
+      std::array<Tensor<1, dim>, dim - 1> t;
+      for (unsigned int q = 0; q < points.size(); ++q)
+        {
+          slave.position(face, points[q], &t);
+          double area_element;
+          slave.normal(face, t, &area_element);
+          slave.shape_values(face, points[q], values);
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int l = 0; l < n; ++l)
+              mass(i, l) += values[i] * values[l] * weights[q] * area_element;
+        }
+      dual.invert(mass);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          double row_sum = 0;
+          for (unsigned int l = 0; l < n; ++l)
+            row_sum += mass(i, l);
+          for (unsigned int l = 0; l < n; ++l)
+            dual(i, l) *= row_sum;
+        }
+      return dual;
+    }
+
     template <int dim>
     bool boxes_meet(const std::pair<Point<dim>, Point<dim>> &a, const std::pair<Point<dim>, Point<dim>> &b,
                     const double reach)
@@ -213,39 +252,7 @@ namespace compliant
         std::array<Tensor<1, dim>, dim - 1> t;
         slave.position(face, middle, &t);
         const Tensor<1, dim> face_normal = slave.normal(face, t);
-        // The dual basis psi_i = sum_l A_il N_l of the face, A = D M^-1 (M the face's mass
-        // matrix, D its row sums): int psi_i N_l = delta_il int N_i, so a node's weighted gap
-        // moves with that node alone, and sum_i psi_i = 1 (Wohlmuth 2000; Popp et al. 2010).
-        FullMatrix<double> dual(face.nodes.size(), face.nodes.size());
-        if (!at_rest)
-          {
-            FullMatrix<double>                       mass(face.nodes.size(), face.nodes.size());
-            std::vector<std::array<double, dim - 1>> full;
-            if constexpr (dim == 2)
-              full = {{0.}, {1.}};
-            else
-              full = {{0., 0.}, {1., 0.}, {1., 1.}, {0., 1.}};
-            region_rule<dim>(full, n_gauss, rule_points, rule_weights);
-            for (unsigned int q = 0; q < rule_points.size(); ++q)
-              {
-                slave.position(face, rule_points[q], &t);
-                double area_element;
-                slave.normal(face, t, &area_element);
-                slave.shape_values(face, rule_points[q], n_slave);
-                for (unsigned int i = 0; i < face.nodes.size(); ++i)
-                  for (unsigned int l = 0; l < face.nodes.size(); ++l)
-                    mass(i, l) += n_slave[i] * n_slave[l] * rule_weights[q] * area_element;
-              }
-            dual.invert(mass);
-            for (unsigned int i = 0; i < face.nodes.size(); ++i)
-              {
-                double row_sum = 0;
-                for (unsigned int l = 0; l < face.nodes.size(); ++l)
-                  row_sum += mass(i, l);
-                for (unsigned int l = 0; l < face.nodes.size(); ++l)
-                  dual(i, l) *= row_sum;
-              }
-          }
+        const FullMatrix<double> dual = at_rest ? FullMatrix<double>() : dual_basis(slave, face, n_gauss);
         // (master face, region of this face's parameters) pairs
         std::vector<std::pair<int, std::vector<std::array<double, dim - 1>>>> regions;
         if (at_rest)

@@ -76,6 +76,20 @@ namespace compliant
                       dealii::PETScWrappers::MPI::Vector &pressure, dealii::PETScWrappers::MPI::Vector &gap);
 
     void release_all();
+    // The active set at a converged state, and back to it after a failed step (a Newton that
+    // failed leaves nodes held that its attempt pulled into contact, far from the state it
+    // returns to).
+    void save()
+    {
+      for (auto &side : sides)
+        side.saved_active = side.active;
+    }
+    void restore()
+    {
+      for (auto &side : sides)
+        if (side.saved_active.size() == side.active.size())
+          side.active = side.saved_active;
+    }
     const std::vector<ContactPair> &pairs() const { return contact_pairs; }
 
   private:
@@ -91,6 +105,7 @@ namespace compliant
       std::unique_ptr<ContactSurface<dim>> slave, master;
       std::vector<bool>                    candidate; // per slave node: may hold (not on the master, not excluded)
       std::vector<int>                     active;    // per slave node: 1 held (the owner decides)
+      std::vector<int>                     saved_active;
       std::vector<double>                  area;      // per slave node: int N_j dA at rest (times thickness)
       std::vector<Mortar>                  mortar;    // per slave node, at the last refresh
     };

@@ -298,6 +298,8 @@ namespace compliant
                                           PETScWrappers::MPI::Vector      &residual,
                                           PETScWrappers::MPI::Vector      *full_residual) const
   {
+    if (with_matrix && constraints != nullptr)
+      cover_contact_couplings(*constraints);
     if (with_matrix)
       tangent = 0;
     residual = 0;

@@ -67,7 +67,6 @@ namespace compliant
           p.contact_seconds += contact_timer.wall_time();
         }
       constraints = p.make_constraints(target, false, ghosted);
-      p.cover_contact_couplings(constraints);
       matrix_free = p.matrix_free_tangent();
       if (matrix_free && iteration > 0 && is_last_trial(u))
         {

@@ -217,6 +217,8 @@ namespace compliant
   template <int dim>
   void FiniteStrainProblem<dim>::start_contact_step()
   {
+    if (contact && contact->pairs)
+      contact->pairs->save();
     if (!contact || !contact->has_friction())
       return;
     PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
@@ -228,6 +230,8 @@ namespace compliant
   template <int dim>
   void FiniteStrainProblem<dim>::restore_contact_state()
   {
+    if (contact && contact->pairs)
+      contact->pairs->restore();
     if (contact && contact->has_friction())
       contact->restore();
   }
@@ -266,7 +270,7 @@ namespace compliant
   }
 
   template <int dim>
-  void FiniteStrainProblem<dim>::cover_contact_couplings(const AffineConstraints<double> &constraints)
+  void FiniteStrainProblem<dim>::cover_contact_couplings(const AffineConstraints<double> &constraints) const
   {
     if (!contact || !contact->pairs)
       return;

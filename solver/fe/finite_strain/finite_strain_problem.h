@@ -107,7 +107,8 @@ namespace compliant
     // Contact between boundaries (Contact/Pairs): a held node's constraint reaches the master
     // surface's nodes it faces now, so the tangent's pattern is rebuilt whenever the constraints
     // refer to a coupling it lacks. Collective.
-    void cover_contact_couplings(const dealii::AffineConstraints<double> &constraints);
+    // (assemble does it before it assembles the tangent.)
+    void cover_contact_couplings(const dealii::AffineConstraints<double> &constraints) const;
 
     // Negative eigenvalues of the condensed tangent stiffness at the current state (0: stable
     // equilibrium under the applied loads; a limit point or bifurcation has been passed
@@ -170,7 +171,7 @@ namespace compliant
     // Contact with rigid obstacles (Contact/Obstacles); null without obstacles. Its active set is
     // chosen inside Newton (FiniteStrainNewtonSystem::linearize) and held by make_constraints.
     std::unique_ptr<ContactSet<dim>>   contact;
-    std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> contact_couplings;
+    mutable std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> contact_couplings;
     unsigned int                       total_linear_solves = 0;
     double                             tangent_assembly_seconds = 0, linear_solve_seconds = 0;
     double                             contact_seconds = 0; // active-set updates (a residual each)
