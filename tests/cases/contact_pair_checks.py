@@ -4,7 +4,7 @@ references that do not come from the contact code: the uniform state of the cont
 Hertz's closed form, the same contact solved against a rigid plane (Contact/Obstacles), the
 equilibrium of the reactions, and the same run on other rank counts.
 
-    contact_pair_checks.py patch | hertz | fork | ranks | inputs
+    contact_pair_checks.py patch | hertz | fork | pin | ranks | inputs
 """
 import math
 import os
@@ -24,6 +24,8 @@ PATCH = os.path.join(cases, "contact", "patch_blocks.prm")
 TWO_CYLINDERS = os.path.join(cases, "contact", "hertz_two_cylinders.prm")
 HERTZ = os.path.join(cases, "contact", "hertz_cylinder.prm")
 FORK = os.path.join(cases, "contact", "fork_closing.prm")
+PIN = os.path.join(cases, "contact", "flexure_hinge_pin.prm")
+STOP = os.path.join(cases, "contact", "flexure_hinge_stop.prm")
 H, DELTA = 0.5, 1e-6
 SAME = "Material/Materials=*: steel, E=1000, nu=0.3"
 SUPPORTS_3D = ("Boundary conditions/Displacement=base: y=0; lower_left: x=0; upper_left: x=0; "
@@ -142,6 +144,27 @@ elif mode == "fork":
     check(abs(lower / lower_expected - 1) <= 0.01, "lower tip deflection within 1 % of the prediction")
     check(abs(q["reaction_force_root_y"] - F) <= 1e-8 * F, "the root carries the load %.10g" % q["reaction_force_root_y"])
     no_penetration(q, nodes, "fork")
+elif mode == "pin":
+    # A travel stop drawn in the geometry: the steel pin meshed with the hinge (Contact/Pairs)
+    # against the rigid circle of Contact/Obstacles, where the link's face is resolved finely
+    # (nt = 8: its nodes 0.6 apart; at the case's nt = 2 they are 2 apart and the rigid pin sinks
+    # between them, 0.25 degrees further). Equilibrium: base and bore carry what the moment puts
+    # on the link (Newton stops on its correction here, at a residual of 4e-4 of the forces).
+    q, curve, nodes = run_with_files(PIN)
+    q_rigid, _, _ = run_with_files(STOP, ["Geometry/Parameters/nt=8"])
+    angle, rigid = q["link_angle_deg"], q_rigid["link_angle_deg"]
+    print("pin: %.4f degrees at the full moment (rigid circle, nt = 8: %.4f); pin force %.6g %.6g; Newton %d over %d steps"
+          % (angle, rigid, q["contact_force_pin_x"], q["contact_force_pin_y"],
+             sum(int(r["newton_iterations"]) for r in curve), len(curve)))
+    check(abs(angle - rigid) <= 0.05, "the link stops within 0.05 degrees of the rigid circle's angle (%.4f)" % (angle - rigid))
+    check(10 < angle < 10.5, "past the 10 degrees where the rigid link would touch (%.4f)" % angle)
+    force = math.hypot(q["contact_force_pin_x"], q["contact_force_pin_y"])
+    for axis in ("x", "y"):
+        imbalance = q["reaction_force_base_%s" % axis] + q["reaction_force_pin_bore_%s" % axis]
+        check(abs(imbalance) <= 1e-3 * force, "base + bore in %s: %.3g (1e-3 of the pin force %.4g)" % (axis, imbalance, force))
+    readme_figure(angle, "10.25", "pin: angle at the full moment, degrees")
+    readme_figure(rigid, "10.27", "rigid circle, nt = 8: angle at the full moment, degrees")
+    no_penetration(q, nodes, "pin")
 elif mode == "ranks":
     # The same answers on 1, 2 and 3 ranks (the master surface is known on every rank).
     for label, case, sets, key in (("3D patch", PATCH, [SAME, "Model=3d", "Geometry/Parameters/depth=0.4", SUPPORTS_3D],
@@ -171,5 +194,5 @@ elif mode == "inputs":
               "'%s': exit %d, '%s'" % (setting, proc.returncode, message[:200]))
         check(not os.path.exists(out), "'%s': no output directory" % setting)
 else:
-    unknown_mode(mode, ("patch", "hertz", "fork", "ranks", "inputs"))
+    unknown_mode(mode, ("patch", "hertz", "fork", "pin", "ranks", "inputs"))
 finish()
