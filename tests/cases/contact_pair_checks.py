@@ -183,6 +183,8 @@ elif mode == "inputs":
            ("Contact/Pairs=blocks: slave=upper_face, master=upper_face", "both slave and master"),
            ("Contact/Pairs=blocks: slave=upper_face, master=lower_face, friction=0.3", "friction"),
            ("Contact/Pairs=a: slave=upper_face, master=lower_face; a: slave=top, master=base", "given twice"),
+           ("Contact/Pairs=a: slave=upper_face, master=lower_face; b: slave=lower_face, master=upper_face",
+            "never be another pair's master"),
            ("Analysis=linear static", "nonlinear static"))
     for setting, expected in bad:
         out = tempfile.mkdtemp(prefix="compliant-pair-input-")

@@ -48,6 +48,20 @@ namespace compliant
           if (pair.master.count(id))
             throw std::invalid_argument(where + ": pair '" + pair.name + "' names one boundary as both slave and "
                                         "master; a part touching itself needs two boundaries");
+        // A boundary held by two pairs, or slave of one and master of another, would give
+        // constraint lines that refer to each other (a cycle AffineConstraints cannot close).
+        for (const auto &other : pairs)
+          for (const int id : pair.slave)
+            if (other.slave.count(id) || other.master.count(id))
+              throw std::invalid_argument(where + ": pairs '" + other.name + "' and '" + pair.name +
+                                          "' share a boundary that is a slave of one: a slave boundary may belong "
+                                          "to one pair only, and never be another pair's master");
+        for (const auto &other : pairs)
+          for (const int id : pair.master)
+            if (other.slave.count(id))
+              throw std::invalid_argument(where + ": pairs '" + other.name + "' and '" + pair.name +
+                                          "' share a boundary that is a slave of one: a slave boundary may belong "
+                                          "to one pair only, and never be another pair's master");
         pairs.push_back(pair);
       }
     return pairs;
@@ -424,6 +438,13 @@ namespace compliant
             if (!constraints.is_constrained(node.dofs[d]) && (k < 0 || std::abs(n[d]) > std::abs(n[k])))
               k = d;
           if (k < 0 || std::abs(n[k]) < 0.2)
+            continue;
+          // A node already held by a line with entries (an obstacle's) would close a cycle.
+          bool tied = false;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (const auto *entries = constraints.get_constraint_entries(node.dofs[d]); entries && !entries->empty())
+              tied = true;
+          if (tied)
             continue;
           const auto line = node.dofs[k];
           constraints.add_line(line);
