@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 122 inputs.
-README_CENSUS = {"refused with exit 2": 111, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
+# The README's census of the corpus: 123 inputs.
+README_CENSUS = {"refused with exit 2": 112, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -412,8 +412,14 @@ solver_case("contact obstacle overlapping the part at rest",
             ["flexure_hinge_stop.prm", "Contact/Obstacles", "pin", "overlaps the part at rest"])
 solver_case("contact in a linear analysis", [stop_case, S, "Analysis=linear static"],
             ["flexure_hinge_stop.prm", "Contact/Obstacles", "linear static"])
-solver_case("contact on an arc-length path", [stop_case, S, "Finite strain/Path=arc length"],
-            ["flexure_hinge_stop.prm", "Contact/Obstacles", "arc length"])
+solver_case("a moving obstacle on an arc-length path",
+            [stop_case, S, "Finite strain/Path=arc length", S,
+             "Contact/Obstacles=pin: circle, center=25 10.634, radius=2, motion=0 1"],
+            ["flexure_hinge_stop.prm", "Contact/Obstacles", "pin", "moves", "arc length"])
+solver_case("friction on an arc-length path",
+            [stop_case, S, "Finite strain/Path=arc length", S,
+             "Contact/Obstacles=pin: circle, center=25 10.634, radius=2, friction=0.3"],
+            ["flexure_hinge_stop.prm", "Contact/Obstacles", "pin", "friction", "arc length"])
 solver_case("no supports (singular)", [cantilever_3d, S, "Boundary conditions/Clamped="], ["Boundary conditions", "constrained"])
 solver_case("unwritable output directory", [hinge, S, "Output/Directory=/proc/compliant"], ["Output/Directory"])
 solver_case("one cell on more ranks than cells", [cantilever_3d, S, "Geometry/Parameters/nx=1",

@@ -386,8 +386,8 @@ namespace compliant
           if (settings.arc_length)
             problem->require_load_driven();
           if (settings.arc_length && problem->contact)
-            throw std::invalid_argument("Contact/Obstacles, Contact/Pairs: contact is followed by load steps, not yet by "
-                                        "Finite strain/Path = arc length");
+            problem->contact->require_fixed_frictionless(
+              "Finite strain/Path = arc length follows loads, where the load factor may turn back");
         }
       catch (const std::invalid_argument &e)
         {

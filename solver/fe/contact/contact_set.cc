@@ -318,6 +318,21 @@ namespace compliant
   }
 
   template <int dim>
+  void ContactSet<dim>::require_fixed_frictionless(const std::string &what) const
+  {
+    for (const auto &o : obstacles)
+      {
+        if (o.motion.norm() > 0)
+          throw std::invalid_argument("Contact/Obstacles: obstacle '" + o.name + "' moves (motion=); " + what +
+                                      ", and a motion proportional to it would drive the path: hold the "
+                                      "obstacle still and load the part, or use Path = load steps");
+        if (o.friction > 0)
+          throw std::invalid_argument("Contact/Obstacles: obstacle '" + o.name + "' has friction (friction=); " +
+                                      what + ", and friction depends on the path taken: use Path = load steps");
+      }
+  }
+
+  template <int dim>
   std::vector<std::string> ContactSet<dim>::names() const
   {
     std::vector<std::string> all;

@@ -124,14 +124,20 @@ namespace compliant
     // sticking where it is (the trial state of a return mapping); it slips within the step
     // once the cone is exceeded, relative to there.
     void start_step(const dealii::PETScWrappers::MPI::Vector &u, double load_factor);
-    // Friction: remembers every node's state (held or free, stick or slip, anchor) at a converged
-    // state, and returns to it after a failed or rejected step (a failed Newton leaves its own).
+    // Remembers every node's state (held or free; with friction stick or slip, anchor) at a
+    // converged state, and returns to it after a failed or rejected step (a failed Newton leaves
+    // its own).
     void save() { saved_nodes = nodes; }
     void restore()
     {
       if (saved_nodes.size() == nodes.size())
         nodes = saved_nodes;
     }
+
+    // Throws std::invalid_argument naming the obstacle where one moves or has friction: `what`
+    // (a path driver) needs contact that depends on the state alone, not on the load factor or
+    // the path to it.
+    void require_fixed_frictionless(const std::string &what) const;
 
     // Frees every node (a path restarted from rest).
     void release_all()

@@ -29,6 +29,7 @@ namespace compliant
       , full(p.locally_owned_dofs, p.communicator)
       , load(p.locally_owned_dofs, p.communicator)
       , ghosted(p.locally_owned_dofs, p.locally_relevant_dofs, p.communicator)
+      , at_lambda(p.locally_owned_dofs, p.communicator)
       // A follower pressure, and a moment on a rigid boundary in 3D, make the tangent unsymmetric.
       , symmetric(p.follower_pressures.empty() && !(dim == 3 && !p.rigid_boundaries.empty()))
     {
@@ -38,20 +39,49 @@ namespace compliant
 
     Linearization linearize(const Vector &u, const double lambda) override
     {
-      ghosted     = u;
-      constraints = p.make_constraints(lambda, true, ghosted);
+      ghosted      = u;
+      bool settled = true, closing = false;
+      if (p.contact)
+        settled = update_contact(lambda, closing);
+      // With contact the held nodes' lines close their gaps (n . du = -gap) in the correction;
+      // the load's solve keeps them where they are (homogeneous lines).
+      constraints = p.make_constraints(lambda, !p.contact, ghosted);
+      if (p.contact)
+        load_constraints = p.make_constraints(lambda, true, ghosted);
       Timer timer;
       p.assemble(ghosted, lambda, &constraints, true, rhs, &full);
-      // r(lambda + 1) - r(lambda): exact, the residual being affine in lambda
-      p.assemble(ghosted, lambda + 1, &constraints, false, load);
-      load.add(-1, rhs);
+      // r(lambda + 1) - r(lambda): exact, the residual being affine in lambda. Without a matrix the
+      // assembly does not lift inhomogeneities: both residuals are taken that way.
+      if (p.contact)
+        {
+          p.assemble(ghosted, lambda, &load_constraints, false, at_lambda);
+          p.assemble(ghosted, lambda + 1, &load_constraints, false, load);
+          load.add(-1, at_lambda);
+        }
+      else
+        {
+          p.assemble(ghosted, lambda + 1, &constraints, false, load);
+          load.add(-1, rhs);
+        }
       p.tangent_assembly_seconds += timer.wall_time();
       const double residual = rhs.l2_norm(), scale = full.l2_norm(), load_norm = load.l2_norm();
+      near_equilibrium      = residual <= release_residual * scale;
+      ++iteration;
       if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(p.communicator) == 0)
         std::cout << "    lambda " << lambda << " residual " << residual << " scale " << scale << " load "
-                  << load_norm << std::endl;
-      return {residual, scale};
+                  << load_norm << (settled ? "" : " (contact changing)") << std::endl;
+      Linearization result;
+      result.residual = residual;
+      result.scale    = scale;
+      result.settled  = settled;
+      result.closing  = closing;
+      return result;
     }
+
+    void begin_correction() override { iteration = 0; }
+    // The obstacles' and the pairs' active sets of the state the path stands on.
+    void step_accepted() override { p.start_contact_step(); }
+    void step_abandoned() override { p.restore_contact_state(); }
 
     int solve(Vector &du_residual, Vector &du_load) override
     {
@@ -74,7 +104,7 @@ namespace compliant
       p.total_linear_solves += 2;
       p.linear_solve_seconds += timer.wall_time();
       constraints.distribute(du_residual);
-      constraints.distribute(du_load);
+      (p.contact ? load_constraints : constraints).distribute(du_load);
       if (!symmetric)
         return -1;
       // K_pp = -M/lambda is negative definite: inertia(K) = inertia(K_pp) + inertia(Schur complement)
@@ -90,9 +120,30 @@ namespace compliant
     bool   stop_requested() override { return p.stop_requested && p.stop_requested(); }
 
   private:
+    // The contact active set at the state in `ghosted` (as FiniteStrainNewtonSystem does): true
+    // when it no longer changes, nothing pulls and nothing penetrates beyond the tolerance.
+    bool update_contact(const double lambda, bool &closing)
+    {
+      Timer contact_timer;
+      p.assemble(ghosted, lambda, &p.hanging_node_constraints, false, full);
+      const double force_tolerance = p.settings.residual_tolerance * full.l2_norm();
+      // Contact forces free a node only once the corrections are near equilibrium for the set.
+      const auto update =
+        p.contact->update_active_set(ghosted, full, lambda, iteration > 0 && near_equilibrium, force_tolerance);
+      if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(p.communicator) == 0)
+        std::cout << "    contact: " << update.changes << " changes, " << update.pulling << " pulling, violation "
+                  << update.violation << std::endl;
+      p.contact_seconds += contact_timer.wall_time();
+      closing = update.violation > p.contact->tolerance;
+      return update.changes == 0 && update.pulling == 0 && update.violation <= p.contact->tolerance;
+    }
+
     FiniteStrainProblem<dim>  &p;
-    Vector                     rhs, full, load, ghosted;
-    AffineConstraints<double>  constraints;
+    Vector                     rhs, full, load, ghosted, at_lambda;
+    AffineConstraints<double>  constraints, load_constraints;
+    unsigned int               iteration        = 0;
+    bool                       near_equilibrium = false;
+    static constexpr double    release_residual = 1e-2; // as FiniteStrainNewtonSystem's
     DirectFactorization        factorization;
     const bool                 symmetric;
     types::global_dof_index    pressure_dofs = 0;

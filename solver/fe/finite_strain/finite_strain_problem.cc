@@ -217,22 +217,27 @@ namespace compliant
   template <int dim>
   void FiniteStrainProblem<dim>::start_contact_step()
   {
-    if (contact && contact->pairs)
-      contact->pairs->save();
-    if (!contact || !contact->has_friction())
+    if (!contact)
       return;
-    PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
-    ghosted = solution;
-    contact->start_step(ghosted, load_factor);
+    if (contact->pairs)
+      contact->pairs->save();
+    if (contact->has_friction())
+      {
+        PETScWrappers::MPI::Vector ghosted(locally_owned_dofs, locally_relevant_dofs, communicator);
+        ghosted = solution;
+        contact->start_step(ghosted, load_factor);
+      }
     contact->save();
   }
 
   template <int dim>
   void FiniteStrainProblem<dim>::restore_contact_state()
   {
+    // A failed Newton leaves the nodes it held or freed: back to the converged state's set (a
+    // step cut back from a set held at a deep first iterate diverged again from it).
     if (contact && contact->pairs)
       contact->pairs->restore();
-    if (contact && contact->has_friction())
+    if (contact)
       contact->restore();
   }
 

@@ -98,11 +98,11 @@ namespace compliant
       solution    = state;
       load_factor = state_load_factor;
     }
-    // Contact with friction: the next load step starts with the held nodes sticking where the
-    // current (converged) state has them; that contact state is saved.
+    // Contact: the converged state's active sets (obstacles and pairs) are saved; with friction
+    // the next load step also starts with the held nodes sticking where this state has them.
     void start_contact_step();
-    // Contact with friction: back to the contact state saved by start_contact_step (after a
-    // failed Newton or a rejected step).
+    // Contact: back to the state saved by start_contact_step (after a failed Newton or a
+    // rejected step).
     void restore_contact_state();
     // Contact between boundaries (Contact/Pairs): a held node's constraint reaches the master
     // surface's nodes it faces now, so the tangent's pattern is rebuilt whenever the constraints

@@ -97,6 +97,11 @@ namespace compliant
     {
       double residual = 0; // norm of the constrained residual r = f_ext(lambda) - f_int(u)
       double scale    = 0; // the force scale convergence is measured against
+      // The problem's own conditions hold at this state (contact: the active set has stopped
+      // changing, nothing pulls or penetrates); a state converges only where they do.
+      bool settled = true;
+      // Constraints were added at this state (contact: nodes found inside an obstacle are held).
+      bool closing = false;
     };
     // Residual and tangent at (u, lambda); throws StepFailure if the state is inadmissible.
     virtual Linearization linearize(const VectorType &u, double lambda) = 0;
@@ -108,6 +113,13 @@ namespace compliant
     virtual void add(VectorType &y, double a, const VectorType &x) const = 0; // y += a x
     virtual double dot(const VectorType &a, const VectorType &b) const = 0;
     virtual bool   stop_requested() { return false; }
+    // A correction (or Newton at a fixed load) starts from a state not in equilibrium.
+    virtual void begin_correction() {}
+    // The state the path stands on (the start, then every accepted step) and a step abandoned
+    // for another from that state: a problem with state of its own (contact's active set) saves
+    // and restores it.
+    virtual void step_accepted() {}
+    virtual void step_abandoned() {}
   };
 
   namespace arc_length_detail
@@ -146,12 +158,14 @@ namespace compliant
     {
       try
         {
+          system.begin_correction();
           for (unsigned int it = 0; it <= settings.max_iterations; ++it)
             {
               const auto linearization = system.linearize(u, target);
               if (!std::isfinite(linearization.residual))
                 return false;
-              if (it > 0 && linearization.residual <= settings.residual_tolerance * linearization.scale)
+              if (it > 0 && linearization.settled &&
+                  linearization.residual <= settings.residual_tolerance * linearization.scale)
                 {
                   report.iterations += it;
                   report.residual = linearization.residual;
@@ -179,6 +193,7 @@ namespace compliant
       NewtonReport report;
       trial = u;
       system.add_correction(trial, dl, tangent);
+      system.begin_correction();
       for (unsigned int it = 0; it <= settings.max_iterations; ++it)
         {
           if (system.stop_requested())
@@ -190,7 +205,8 @@ namespace compliant
           report.residual_scale    = std::max(linearization.scale, 1e-300);
           if (!std::isfinite(linearization.residual))
             throw StepFailure("the residual is not finite");
-          if (it > 0 && linearization.residual <= settings.residual_tolerance * report.residual_scale)
+          if (it > 0 && linearization.settled &&
+              linearization.residual <= settings.residual_tolerance * report.residual_scale)
             {
               report.iterations = it;
               return report;
@@ -207,11 +223,18 @@ namespace compliant
           const double c = inner(increment, dl, increment, dl) + 2 * inner(increment, 0, correction, 0) +
                            inner(correction, 0, correction, 0) - step * step;
           const double discriminant = b * b - 4 * a * c;
-          if (discriminant < 0)
+          // Where the problem's conditions just changed (a contact node held), the correction may
+          // leave the line off the sphere for this iteration: its point nearest the sphere (the
+          // real part of the complex roots) is taken, and the next iterations return to it.
+          if (discriminant < 0 && linearization.settled)
             throw StepFailure("the arc-length constraint has no real root (the path turns sharply within the step)");
-          const double root = std::sqrt(discriminant);
+          const double root = std::sqrt(std::max(discriminant, 0.));
           const double d1 = (-b + root) / (2 * a), d2 = (-b - root) / (2 * a);
-          const double d  = along_c + d1 * along_t >= along_c + d2 * along_t ? d1 : d2;
+          // Where contact has just closed, the root with the higher load factor: a load that pushes
+          // the part onto an obstacle rises along the contact branch, also where the free path fell
+          // (a snap-through caught by a stop), and the other root would pull the contact open.
+          const double d = linearization.closing ? std::max(d1, d2) :
+                           along_c + d1 * along_t >= along_c + d2 * along_t ? d1 : d2;
           system.add(correction, d, load_correction);
           system.add_correction(trial, 1, correction);
           dl += d;
@@ -221,13 +244,33 @@ namespace compliant
             {
               increment = trial;
               system.add(increment, -1, u);
-              report.iterations = it + 1;
-              system.linearize(trial, lambda + dl); // the state the next corrections start from
-              return report;
+              // The state the next corrections start from; one whose conditions still change
+              // (a contact node held or freed) iterates on.
+              if (system.linearize(trial, lambda + dl).settled)
+                {
+                  report.iterations = it + 1;
+                  return report;
+                }
             }
         }
       throw StepFailure("no convergence in " + std::to_string(settings.max_iterations) + " iterations (residual " +
                         std::to_string(report.residual) + ")");
+    }
+    // The critical point found between two converged steps (arc length, load factor and slope
+    // d lambda / d s of each): a limit point where the load factor turned, else a bifurcation.
+    inline CriticalPoint critical_point(const bool turned, const double s0, const double l0, const double d0,
+                                        const double s1, const double l1, const double d1, const unsigned int step,
+                                        const int unstable_before, const int unstable_after)
+    {
+      CriticalPoint point;
+      point.kind            = turned ? CriticalPoint::Kind::limit_point : CriticalPoint::Kind::bifurcation;
+      point.bracket_low     = std::min(l0, l1);
+      point.bracket_high    = std::max(l0, l1);
+      point.load_factor     = turned ? hermite_extremum(s0, l0, d0, s1, l1, d1) : 0.5 * (l0 + l1);
+      point.step            = step;
+      point.unstable_before = unstable_before;
+      point.unstable_after  = unstable_after;
+      return point;
     }
     // A step that passes the end load factor is replaced by the state at it exactly, corrected from
     // the interpolated one (true). If Newton fails there, the step past the end is kept, linearized
@@ -269,6 +312,7 @@ namespace compliant
     VectorType      tangent = u, candidate_tangent = u, correction = u, load_correction = u, increment = u, previous = u, trial = u;
 
     system.linearize(u, lambda);
+    system.step_accepted();
     int          unstable   = system.solve(correction, tangent);
     const double reference2 = system.dot(tangent, tangent); // |t0|^2
     if (!(reference2 > 0) || !std::isfinite(reference2))
@@ -286,6 +330,9 @@ namespace compliant
     bool         have_previous = false;
     double       previous_dl   = 0;
     bool         approaching   = false; // a critical point was found in a step and is approached again
+    // The arc length past which an approach that finds nothing ends (what the longer step saw was
+    // not there on the path, e.g. a contact node held within it).
+    double       approach_ends = 0;
     bool         linearized_here = true; // the system's latest linearization is at (u, lambda)
 
     // Halves the step after a failure; true when it fell below the minimum (the path stops).
@@ -293,6 +340,7 @@ namespace compliant
       ++result.cutbacks;
       step /= 2;
       linearized_here = false;
+      system.step_abandoned();
       if (on_cutback)
         on_cutback(lambda, why, step / unit);
       if (step >= settings.minimum_step * unit)
@@ -360,9 +408,11 @@ namespace compliant
         if ((turned || changed) && !approaching && settings.critical_refinement > 1)
           {
             // Approach it again in shorter steps, so that the cubic locates it closely.
-            approaching = true;
+            approaching     = true;
+            approach_ends   = arc_length + 1.5 * step;
             step        = std::max(step / settings.critical_refinement, settings.minimum_step * unit);
             linearized_here = false;
+            system.step_abandoned();
             continue; // from the step's start, which is linearized again
           }
         const double lambda_before = lambda, arc_before = arc_length;
@@ -375,25 +425,19 @@ namespace compliant
         unstable      = unstable_after;
         std::swap(tangent, candidate_tangent);
         linearized_here = true;
+        system.step_accepted();
         arc_length += std::sqrt(inner(increment, dl, increment, dl));
         ++result.steps;
         result.newton_iterations += report.iterations;
         if (turned || changed)
           {
             approaching = false;
-            CriticalPoint point;
-            point.kind         = turned ? CriticalPoint::Kind::limit_point : CriticalPoint::Kind::bifurcation;
-            point.bracket_low  = std::min(lambda_before, lambda);
-            point.bracket_high = std::max(lambda_before, lambda);
-            point.load_factor  = turned ? arc_length_detail::hermite_extremum(
-                                           arc_before, lambda_before, sign / std::sqrt(tt + psi2), arc_length,
-                                           lambda, sign_after / std::sqrt(tt_after + psi2)) :
-                                          0.5 * (lambda_before + lambda);
-            point.step            = result.steps;
-            point.unstable_before = unstable_before;
-            point.unstable_after  = unstable;
-            result.critical_points.push_back(point);
+            result.critical_points.push_back(arc_length_detail::critical_point(
+              turned, arc_before, lambda_before, sign / std::sqrt(tt + psi2), arc_length, lambda,
+              sign_after / std::sqrt(tt_after + psi2), result.steps, unstable_before, unstable));
           }
+        if (approaching && arc_length > approach_ends)
+          approaching = false;
         on_step({result.steps, lambda, arc_length, report, unstable}, u);
         const double used = std::max<unsigned int>(report.iterations, 1);
         // No growth while a critical point is approached in short steps.
