@@ -25,6 +25,7 @@ DefineConstant[ rp = {5, Name "Parameters/rp", Help "pin radius = eye hole radiu
 DefineConstant[ rho = {5, Name "Parameters/rho", Help "fillet radius of the ternary links' windows, mm"} ];
 DefineConstant[ lc = {5, Name "Parameters/lc", Help "mesh size along the bars, mm"} ];
 DefineConstant[ n_eye = {4, Name "Parameters/n_eye", Help "mesh segments per quarter of each eye and pin circle"} ];
+DefineConstant[ quads = {0, Name "Parameters/quads", Help "plane model: 0 triangles, 1 quadrilaterals (finite strain, contact)"} ];
 DefineConstant[ solid = {0, Name "Parameters/solid", Help "0: plane model (triangles); 1: 3D solid of thickness t (hexahedra, two through t)"} ];
 DefineConstant[ t = {10, Name "Parameters/t", Help "thickness of the links of the 3D solid, mm (the plane model takes Material/Thickness)"} ];
 DefineConstant[ EA = {193.96, Name "Parameters/EA", Help "ground link r1, mm"} ];
@@ -44,6 +45,10 @@ If (w <= 0 || rp <= 0 || rp >= w / 2 || rho <= 0 || lc <= 0 || n_eye < 1 || t <=
     EA <= 0 || AB <= 0 || BC <= 0 || BG <= 0 || CE <= 0 || DE <= 0 || CD <= 0 || EG <= 0 || DF <= 0 || FG <= 0 || GH <= 0 || FH <= 0)
   Error("jansen_leg.geo: need 0 < rp < w/2 (the eyes inside the bars' round ends), rho > 0, lc > 0, n_eye >= 1, t > 0 and every link length (EA, AB, BC, BG, CE, DE, CD, EG, DF, FG, GH, FH) > 0");
   Abort; // gmsh reads on after an Error: stop, or a later error replaces this message
+EndIf
+If (quads != 0 && quads != 1)
+  Error("jansen_leg.geo: need quads = 0 (triangles) or 1 (quadrilaterals), got %g", quads);
+  Abort;
 EndIf
 R = w / 2;
 // Coincident pin and eye circles must stay separate curves. The plane model switches gmsh's
@@ -242,6 +247,12 @@ Mesh.CharacteristicLengthMax = lc;
 Mesh.CharacteristicLengthFromPoints = 1;
 
 If (solid == 0)
+// quads = 1: quadrilaterals (Blossom recombination, as the 3D solid's faces), for the analyses
+// that need them (finite strain, contact).
+If (quads == 1)
+  Mesh.RecombineAll = 1;
+  Mesh.RecombinationAlgorithm = 1; // Blossom
+EndIf
 Physical Surface("crank") = {crank};
 Physical Surface("link_BC") = {link_BC};
 Physical Surface("link_BG") = {link_BG};

@@ -1,14 +1,15 @@
 #!/usr/bin/python3
 """Statics hand check of the Jansen leg with ideal pins (the reference for the FE joint forces).
 
-    leg_statics.py [--theta2 DEG] [--load FX FY] [--summary summary.json] [--tolerance 0.02]
+    leg_statics.py [--theta2 DEG] [--load FX FY] [--load-point X Y] [--summary summary.json] [--tolerance 0.02]
 
 The crank is held by the motor at A (force and moment), E is a pin to the ground, the foot load
 acts at H. With the crank held the leg is a statically determinate structure of seven rigid
 links: 7 x 3 equilibrium equations of the links and 2 x 5 of the free pins B, C, D, F, G give
 the 31 unknowns (two force components per link end, the motor's force and moment at A). The
 pose is assembled from the paper's link lengths with the same circle intersections as the
-kinematics library and meshes/jansen_leg.geo.
+kinematics library and meshes/jansen_leg.geo. --load-point puts the load's line of action
+through another point of the foot link (the ground's contact point, cases/jansen/leg_ground_contact.prm).
 
 With --summary, compares the forces the pins put on each link, as the FE linkage analysis
 reports them (reaction_force_eye_<link>_<joint>_x|y), the motor moment and the pin moments, and
@@ -51,8 +52,9 @@ def joints(theta2, L=LENGTHS):
     return dict(A=A, B=B, C=C, D=D, E=E, F=F, G=G, H=H)
 
 
-def solve(theta2, load):
+def solve(theta2, load, point=None):
     P = joints(theta2)
+    at = point if point is not None else P["H"]  # where the load acts on FGH
     unknowns = [(link, j) for link, js in LINKS.items() for j in js]  # force by pin j on link
     index = {u: 2 * k for k, u in enumerate(unknowns)}
     n = 2 * len(unknowns) + 1  # + motor moment on the crank
@@ -67,7 +69,7 @@ def solve(theta2, load):
         bx = by = bm = 0.0
         if link == "FGH":  # external load at H
             bx, by = -load[0], -load[1]
-            bm = -(P["H"][0] * load[1] - P["H"][1] * load[0])
+            bm = -(at[0] * load[1] - at[1] * load[0])
         if link == "AB":
             m[motor] = 1
         rows += [fx, fy, m]
@@ -85,7 +87,7 @@ def solve(theta2, load):
     return P, forces, x[motor]
 
 
-def ternary_moment_scale(P, forces, load):
+def ternary_moment_scale(P, forces, load, point=None):
     """Scale of the bending moments in the ternary links: the largest moment of the force at one
     corner (or the foot load) about another corner of the same link. (The sum over all corners
     vanishes by equilibrium; a single force's moment is what the bars between the corners carry.)"""
@@ -93,7 +95,7 @@ def ternary_moment_scale(P, forces, load):
     for link in ("CDE", "FGH"):
         acting = [(j, P[j], forces[(link, j)]) for j in LINKS[link]]
         if link == "FGH":
-            acting.append(("H", P["H"], np.array(load)))
+            acting.append(("H", point if point is not None else P["H"], np.array(load)))
         for j, p, f in acting:
             for corner in link:
                 if corner != j:
@@ -116,10 +118,12 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--theta2", type=float, default=37.2089)
     ap.add_argument("--load", type=float, nargs=2, default=[0.0, 500.0], help="force at H, N")
+    ap.add_argument("--load-point", type=float, nargs=2, default=None,
+                    help="a point of the load's line of action, mm (default H)")
     ap.add_argument("--summary", help="summary.json of the FE linkage run to compare")
     ap.add_argument("--tolerance", type=float, default=0.02)
     args = ap.parse_args()
-    P, forces, motor = solve(args.theta2, args.load)
+    P, forces, motor = solve(args.theta2, args.load, args.load_point)
     scale = max(np.linalg.norm(f) for f in forces.values())
     q = json.load(open(args.summary))["quantities"] if args.summary else None
     print("theta2 = %g deg, load at H = (%g, %g) N, joints (mm): %s" % (
@@ -139,7 +143,7 @@ def main():
         print(line)
     print("motor moment on the crank at A: %.3f N mm" % motor +
           ("   FE: %.3f N mm" % fe_moment_about_joint(q, "eye_AB_A", P["A"]) if q else ""))
-    bending = ternary_moment_scale(P, forces, args.load)
+    bending = ternary_moment_scale(P, forces, args.load, args.load_point)
     print("moment scale of the ternary links (one corner's force about another corner): %.1f N mm" % bending)
     if q:
         pin_moments = [abs(fe_moment_about_joint(q, fe_name(l, j), P[j])) for (l, j) in forces if (l, j) != ("AB", "A")]

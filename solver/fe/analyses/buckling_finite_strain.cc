@@ -24,6 +24,11 @@ namespace compliant
     const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
     const double lambda0 = settings.reference_load_factor;
     PathSettings path    = read_path_settings(const_cast<dealii::ParameterHandler &>(context.prm), p, dim);
+    // The eigenproblem about the state is set up on the local constraints alone: never drop them.
+    if (!path.finite_strain.extra.empty())
+      throw InputError("case file '" + p.case_file + "', Extra constraints: pins, mirror ties and edge supports "
+                       "are held by linear buckling and by nonlinear static, not by buckling about a "
+                       "finite-strain state (Buckling/Reference load factor > 0)");
     if (!path.finite_strain.follower_pressure.empty())
       throw InputError("case file '" + p.case_file + "': Buckling/Reference load factor > 0 needs a symmetric "
                        "tangent; Finite strain/Follower pressure makes it unsymmetric");

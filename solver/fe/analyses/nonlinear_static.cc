@@ -316,12 +316,8 @@ namespace compliant
 
   PathSettings read_path_settings(dealii::ParameterHandler &prm, const CaseParameters &p, const int dim)
   {
-    // The finite-strain problem does not hold pins, ties or edge supports yet: never drop them.
-    if (!read_extra_constraints(prm).empty())
-      throw InputError("case file '" + p.case_file + "', Extra constraints: pins, mirror ties and edge supports "
-                       "are held by linear static, linear buckling, modal and linkage analyses, not at finite "
-                       "strain (nonlinear static, buckling about a finite-strain state)");
     PathSettings s;
+    s.finite_strain.extra   = read_extra_constraints(prm);
     s.finite_strain.contact = read_contact_settings(prm);
     prm.enter_subsection("Finite strain");
     s.finite_strain.law                   = prm.get("Law");
@@ -368,7 +364,8 @@ namespace compliant
     PathSettings settings = read_path_settings(const_cast<dealii::ParameterHandler &>(context.prm), p, dim);
 
     dealii::Timer timer;
-    const auto    partition = choose_mesh_partition(context, p, "");
+    const auto    partition = choose_mesh_partition(
+      context, p, settings.finite_strain.extra.empty() ? "" : "Extra constraints (ties between any two bodies)");
     const auto    set_up    = [&](const std::shared_ptr<const GeometryImperfection> &imperfection) {
       auto problem = std::make_unique<FiniteStrainProblem<dim>>(p, settings.finite_strain, context.geometry, comm,
                                                                 partition);

@@ -13,7 +13,8 @@ namespace compliant
     prm.declare_entry("Edge supports", "", dealii::Patterns::Anything(),
                       "Components held at zero on the DoFs shared by several boundaries (edges in "
                       "3D, corners in 2D): 'bottom & sides: z'. Read by the linear static, linear "
-                      "buckling, modal and linkage analyses; finite strain refuses it.");
+                      "buckling, modal, linkage and nonlinear static analyses (not by buckling about "
+                      "a finite-strain state).");
     prm.declare_entry("Mirror ties", "", dealii::Patterns::Anything(),
                       "Ties each node of a boundary to its mirror image across a plane: "
                       "'x_ends: plane=z 0, even=y, odd=z; ...' makes u_y even and u_z odd in z on "
@@ -24,7 +25,8 @@ namespace compliant
                       "field of one parity and leaves the other free, e.g. the bending part of a "
                       "plate's side faces but not the membrane part (the 3D hard simple support, "
                       "see cases/verification/nafems_fv52.md). Read by the linear static, linear "
-                      "buckling, modal and linkage analyses; finite strain refuses it.");
+                      "buckling, modal, linkage and nonlinear static analyses (exact at finite "
+                      "strain; not read by buckling about a finite-strain state).");
     prm.declare_entry("Pins", "", dealii::Patterns::Anything(),
                       "Frictionless pin joints: 'B: pin_B, eye_AB_B, eye_BC_B; ...', the pin "
                       "disk's boundary first, then the eyes (holes of the same radius, meshed with "
@@ -32,7 +34,10 @@ namespace compliant
                       "sliding is free: force, no moment (in 3D each node of an eye is held radially, "
                       "one also axially: a revolute joint). Clamp a pin's boundary to pin it to the "
                       "ground. 'joint=bonded' in an item welds that joint instead. Read by the "
-                      "linear static, linear buckling, modal and linkage analyses; finite strain refuses them.");
+                      "linear static, linear buckling, modal, linkage and nonlinear static analyses; "
+                      "at finite strain the radial ties keep their reference directions (joints "
+                      "that turn little: a link turned by theta on its pin is off by about r "
+                      "theta^2 / 2).");
     prm.leave_subsection();
   }
 

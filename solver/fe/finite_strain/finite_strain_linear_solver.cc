@@ -46,7 +46,7 @@ namespace compliant
     const bool wanted = method == SolverMethod::matrix_free ||
                         (method == SolverMethod::automatic && dim == 3 && dof_handler.n_dofs() >= auto_matrix_free_dofs);
     return wanted && !iterative_failed && !mixed && follower_pressures.empty() &&
-           rigid_boundaries.empty() && !contact && fe->degree >= 2;
+           rigid_boundaries.empty() && !contact && settings.extra.empty() && fe->degree >= 2;
   }
 
   template <int dim>
@@ -64,6 +64,8 @@ namespace compliant
       why = "a rigid boundary ties its nodes together (the multigrid levels cannot)";
     else if (contact)
       why = "contact constraints change with the active set (the multigrid levels do not hold them)";
+    else if (!settings.extra.empty())
+      why = "pins, mirror ties or edge supports tie DoFs the multigrid levels do not hold";
     else if (fe->degree < 2 && method != SolverMethod::cg_amg)
       why = "degree 1 has no p-multigrid levels";
     else if (method == SolverMethod::automatic)

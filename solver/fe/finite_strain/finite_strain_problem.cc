@@ -122,6 +122,7 @@ namespace compliant
     for (const auto &load : boundary_conditions.rigid)
       rigid_boundaries.emplace_back(load, dof_handler, *mapping, hanging_node_constraints, communicator);
 
+    set_up_extra_constraints();
     set_up_contact();
     const PETScWrappers::MPI::Vector zero(locally_owned_dofs, locally_relevant_dofs, communicator);
     const auto constraints = make_constraints(0, true, zero, true); // refuses supported rigid nodes
@@ -136,10 +137,11 @@ namespace compliant
                                              const bool for_sparsity) const
   {
     AffineConstraints<double> constraints;
-    constraints.reinit(locally_relevant_dofs);
+    const bool                whole = !settings.extra.empty(); // every line on every rank
+    constraints.reinit(whole ? complete_index_set(dof_handler.n_dofs()) : locally_relevant_dofs);
     // Hanging nodes first (adaptive meshes from the model ladder): a hanging DoF on a supported
     // boundary follows its masters, which carry the prescribed values.
-    constraints.merge(hanging_node_constraints);
+    constraints.merge(hanging_node_constraints, AffineConstraints<double>::no_conflicts_allowed, whole);
     const ComponentMask displacement = fe->component_mask(FEValuesExtractors::Vector(0));
     std::vector<bool>   all(fe->n_components(), false);
     for (unsigned int d = 0; d < dim; ++d)
@@ -203,10 +205,22 @@ namespace compliant
         rigid.add_constraints(constraints, for_sparsity);
       }
     // Newton solves for the correction: the Dirichlet value minus the current displacement.
-    // (Hanging-node lines stay homogeneous: the displacement satisfies them at every step.)
+    // (Hanging-node lines stay homogeneous: the displacement satisfies them at every step.) With
+    // every line on every rank, a DoF no line of this rank reaches keeps no correction.
+    PETScWrappers::MPI::Vector extended;
+    if (whole && !homogeneous)
+      state_for_constraints(u, extended);
+    const PETScWrappers::MPI::Vector &state = whole && !homogeneous ? extended : u;
+    const auto known = [&](const types::global_dof_index i) {
+      return !whole || locally_relevant_dofs.is_element(i) || extra_dofs.is_element(i);
+    };
     for (const auto &line : constraints.get_lines())
       if (line.entries.empty())
-        constraints.set_inhomogeneity(line.index, homogeneous ? 0. : line.inhomogeneity - u[line.index]);
+        constraints.set_inhomogeneity(line.index, homogeneous || !known(line.index) ?
+                                                    0. :
+                                                    line.inhomogeneity - state[line.index]);
+    if (whole)
+      add_extra_lines(constraints);
     // Contact lines are on the correction already (n . du = -gap), after the supports they defer to.
     if (contact)
       contact->add_constraints(constraints, u, lambda, homogeneous || for_sparsity);

@@ -14,6 +14,7 @@
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
+#include "constraints/extra_constraints.h"
 #include "constraints/rigid_boundary.h"
 #include "contact/contact_set.h"
 #include "discretization/discretization.h"
@@ -46,6 +47,9 @@ namespace compliant
     double      residual_tolerance = 1e-9; // relative to the internal force scale
     unsigned    line_search_steps  = 5;
     ContactSettings contact; // subsection Contact: rigid obstacles
+    // Extra constraints (pins, mirror ties, edge supports): lines on the displacements of the
+    // reference configuration (finite_strain_extra_constraints.cc).
+    ExtraConstraints extra;
   };
 
   template <int dim>
@@ -206,6 +210,19 @@ namespace compliant
                                                        bool for_sparsity = false) const;
     // Contact/Obstacles against the mesh (std::invalid_argument naming the entry).
     void set_up_contact();
+    // Extra constraints: their lines, made once against the supports (std::invalid_argument
+    // naming the entry). With them every rank keeps every constraint line: a pin ties DoFs of
+    // bodies any ranks own, and its supported pin must be known where its eyes are.
+    void set_up_extra_constraints();
+    // Adds the extra constraints' lines (homogeneous: the state satisfies them) to constraints
+    // that hold every line (the supports already in).
+    void add_extra_lines(dealii::AffineConstraints<double> &constraints) const;
+    // The displacement u with the DoFs the extra lines name ghosted as well (the support values
+    // their chains take); u itself without extra constraints.
+    void state_for_constraints(const dealii::PETScWrappers::MPI::Vector &u,
+                               dealii::PETScWrappers::MPI::Vector       &state) const;
+    std::vector<dealii::AffineConstraints<double>::ConstraintLine> extra_lines;
+    dealii::IndexSet                                               extra_dofs; // every DoF they name
     // u + alpha du, with every rigid boundary put on its exact rigid motion.
     void add_correction(dealii::PETScWrappers::MPI::Vector &u, double alpha,
                         const dealii::PETScWrappers::MPI::Vector &du) const;
