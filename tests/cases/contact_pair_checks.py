@@ -4,7 +4,7 @@ references that do not come from the contact code: the uniform state of the cont
 Hertz's closed form, the same contact solved against a rigid plane (Contact/Obstacles), the
 equilibrium of the reactions, and the same run on other rank counts.
 
-    contact_pair_checks.py patch | hertz | fork | pin | ranks | inputs
+    contact_pair_checks.py patch | hertz | fork | pin | ranks | moving | inputs
 """
 import math
 import os
@@ -176,6 +176,39 @@ elif mode == "ranks":
             for name in (key, "contact_nodes_" + key.split("_")[2], "reaction_force_top_y"):
                 a, b = runs[1][name], runs[np][name]
                 check(abs(a - b) <= 1e-9 * abs(a), "%s: %s on %d ranks %.12g = on 1 rank %.12g" % (label, name, np, b, a))
+elif mode == "moving":
+    # A stop drawn in the geometry and moved by a prescribed motion: the lower block's face, driven
+    # up by Boundary conditions/Displacement, is the master surface (a rigid obstacle of the shape
+    # gmsh draws); the upper block, held at its top, is squeezed by 1e-6 between them. Every slave
+    # node carries the upper block's uniaxial plane-strain pressure, on meshes of 40 against 56
+    # cells, the same on 1 and 3 ranks.
+    E_upper, nu_upper = 400.0, 0.1
+    expected = DELTA / (H * (1 - nu_upper ** 2) / E_upper)
+    sets = ["Geometry/Parameters/nl=40", "Geometry/Parameters/nu=56", "Geometry/Parameters/ny=12",
+            "Boundary conditions/Displacement=base: y=0; lower_left: x=0; upper_left: x=0; top: y=0; "
+            "lower_face: y=%g" % DELTA]
+    runs = {}
+    for np in (1, 3):
+        q, curve, nodes = run_with_files(PATCH, sets, np=np)
+        pressures = [float(n["pressure"]) for n in nodes]
+        held = sum(1 for n in nodes if n["obstacle"])
+        mean = sum(pressures) / len(pressures)
+        spread = (max(pressures) - min(pressures)) / mean
+        label = "driven master face, %d rank%s" % (np, "s" if np > 1 else "")
+        print("%s: %d nodes, pressure %.10g, spread %.2e, Newton %s" %
+              (label, len(nodes), mean, spread, [r["newton_iterations"] for r in curve]))
+        check(held == len(nodes) == 57, "%s: all %d slave nodes held (%d)" % (label, len(nodes), held))
+        check(spread <= 1e-8, "%s: a uniform pressure (spread %.2e <= 1e-8)" % (label, spread))
+        check(abs(mean / expected - 1) <= 1e-5, "%s: pressure %.10g = the upper block's small-strain %.10g to 1e-5"
+              % (label, mean, expected))
+        force = q["contact_force_blocks_y"]
+        check(abs(force + q["reaction_force_top_y"]) <= 1e-9 * abs(force),
+              "%s: contact force %.10g balances the top's reaction" % (label, force))
+        no_penetration(q, nodes, label)
+        runs[np] = q
+    for name in ("contact_force_blocks_y", "reaction_force_top_y", "reaction_force_base_y"):
+        a, b = runs[1][name], runs[3][name]
+        check(abs(a - b) <= 1e-9 * abs(a), "driven master face: %s on 3 ranks %.12g = on 1 rank %.12g" % (name, b, a))
 elif mode == "inputs":
     # Bad pairs: one clear error naming the case file and the parameter, exit 2, no output.
     bad = (("Contact/Pairs=blocks: slave=upper_face, master=nowhere", "nowhere"),
@@ -196,5 +229,5 @@ elif mode == "inputs":
               "'%s': exit %d, '%s'" % (setting, proc.returncode, message[:200]))
         check(not os.path.exists(out), "'%s': no output directory" % setting)
 else:
-    unknown_mode(mode, ("patch", "hertz", "fork", "pin", "ranks", "inputs"))
+    unknown_mode(mode, ("patch", "hertz", "fork", "pin", "ranks", "moving", "inputs"))
 finish()
