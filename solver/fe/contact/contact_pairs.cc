@@ -121,12 +121,19 @@ namespace compliant
     for (const auto &part : Utilities::MPI::all_gather(communicator, local))
       for (std::size_t k = 0; k + 1 < part.size(); k += 2)
         displacement[static_cast<types::global_dof_index>(part[k])] = part[k + 1];
+    // The mortar integrals depend on the surfaces' positions alone: at the state of the last
+    // refresh (a Newton iteration's update and both constraint sets, then the output's calls)
+    // they are kept. Every rank gathers the same map, so every rank decides alike.
+    if (refreshed && displacement == refreshed_at)
+      return;
     for (auto &side : sides)
       {
         side.slave->update(displacement);
         side.master->update(displacement);
         integrate(side, false);
       }
+    refreshed_at = std::move(displacement);
+    refreshed    = true;
   }
 
   namespace

@@ -118,6 +118,9 @@ namespace compliant
     // Both surfaces of every pair at state u, and the mortar data of every slave node this rank
     // sees. Collective.
     void refresh(const dealii::PETScWrappers::MPI::Vector &u);
+    // The surfaces' displacements of the last refresh (all ranks alike).
+    std::map<dealii::types::global_dof_index, double> refreshed_at;
+    bool                                              refreshed = false;
     void integrate(Side &side, bool at_rest) const;
     bool relevant(const typename ContactSurface<dim>::Node &node) const
     {
