@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 123 inputs.
-README_CENSUS = {"refused with exit 2": 112, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
+# The README's census of the corpus: 126 inputs.
+README_CENSUS = {"refused with exit 2": 115, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -412,6 +412,18 @@ solver_case("contact obstacle overlapping the part at rest",
             ["flexure_hinge_stop.prm", "Contact/Obstacles", "pin", "overlaps the part at rest"])
 solver_case("contact in a linear analysis", [stop_case, S, "Analysis=linear static"],
             ["flexure_hinge_stop.prm", "Contact/Obstacles", "linear static"])
+# Pins at finite strain: the whole mesh on every rank, and not about a finite-strain state.
+leg_ground = os.path.join(root, "cases", "jansen", "leg_ground_contact.prm")
+solver_case("pins at finite strain on a distributed mesh", [leg_ground, S, "Discretization/Mesh partition=distributed"],
+            ["leg_ground_contact.prm", "Mesh partition", "Extra constraints", "whole mesh"])
+solver_case("a pin naming an unknown eye at finite strain",
+            [leg_ground, S, "Extra constraints/Pins=B: pin_B, eye_AB_B, eye_BC_Q"],
+            ["leg_ground_contact.prm", "Extra constraints/Pins", "eye_BC_Q"])
+solver_case("pins in buckling about a finite-strain state",
+            [os.path.join(root, "cases", "jansen", "leg_structure.prm"), S, "Geometry/Parameters/quads=1", S,
+             "Analysis=buckling", S, "Buckling/Reference load factor=1", S, "Loads/Total force=", S,
+             "Loads/Traction=foot: 0 1"],
+            ["leg_structure.prm", "Extra constraints", "finite-strain state"])
 solver_case("a moving obstacle on an arc-length path",
             [stop_case, S, "Finite strain/Path=arc length", S,
              "Contact/Obstacles=pin: circle, center=25 10.634, radius=2, motion=0 1"],
