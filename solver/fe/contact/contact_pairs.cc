@@ -383,10 +383,10 @@ namespace compliant
   template <int dim>
   void ContactPairs<dim>::update_active_set(const PETScWrappers::MPI::Vector &u, const PETScWrappers::MPI::Vector &residual,
                                             const bool release, const double force_tolerance, unsigned int &changes,
-                                            unsigned int &pulling, double &violation)
+                                            unsigned int &closed, unsigned int &pulling, double &violation)
   {
     refresh(u);
-    unsigned int local_changes = 0, local_pulling = 0;
+    unsigned int local_changes = 0, local_closed = 0, local_pulling = 0;
     double       local_violation = 0;
     for (auto &side : sides)
       {
@@ -416,6 +416,7 @@ namespace compliant
                         << node.dofs[1] << (now ? " held" : " freed") << ", force " << force_of(side, j, residual)
                         << ", gap " << m.gap << std::endl;
             local_changes += now != side.active[j];
+            local_closed += !side.active[j] && now;
             decided[j] = now;
           }
         // The owners' decisions to every rank (each slave node has one owner).
@@ -423,6 +424,7 @@ namespace compliant
                       communicator);
       }
     changes += Utilities::MPI::sum(local_changes, communicator);
+    closed += Utilities::MPI::sum(local_closed, communicator);
     pulling += Utilities::MPI::sum(local_pulling, communicator);
     violation = std::max(violation, Utilities::MPI::max(local_violation, communicator));
   }

@@ -54,7 +54,7 @@ namespace compliant
     // (owned), as ContactSet::update_active_set; adds to changes, pulling and violation. Collective.
     void update_active_set(const dealii::PETScWrappers::MPI::Vector &u,
                            const dealii::PETScWrappers::MPI::Vector &residual, bool release, double force_tolerance,
-                           unsigned int &changes, unsigned int &pulling, double &violation);
+                           unsigned int &changes, unsigned int &closed, unsigned int &pulling, double &violation);
     // The held nodes' constraints on the correction at state u (the mortar data of u). Collective.
     void add_constraints(dealii::AffineConstraints<double> &constraints, const dealii::PETScWrappers::MPI::Vector &u,
                          bool homogeneous);

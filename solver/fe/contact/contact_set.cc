@@ -218,17 +218,20 @@ namespace compliant
                 stick_at(node, x, gap, n, load_factor);
             }
           update.changes += now != node.active;
+          update.closed += node.active < 0 && now >= 0;
           update.violation = std::max(update.violation, now >= 0 ? std::abs(gap) : -gap);
           node.active      = now;
           if (now >= 0 && node.anchor_obstacle < 0)
             node.anchor_obstacle = now;
         }
     update.changes   = Utilities::MPI::sum(update.changes, communicator);
+    update.closed    = Utilities::MPI::sum(update.closed, communicator);
     update.pulling   = Utilities::MPI::sum(update.pulling, communicator);
     update.violation = Utilities::MPI::max(update.violation, communicator);
     share_active_set();
     if (pairs)
-      pairs->update_active_set(u, residual, release, force_tolerance, update.changes, update.pulling, update.violation);
+      pairs->update_active_set(u, residual, release, force_tolerance, update.changes, update.closed, update.pulling,
+                               update.violation);
     return update;
   }
 

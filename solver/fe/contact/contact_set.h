@@ -57,6 +57,7 @@ namespace compliant
     struct Update
     {
       unsigned int changes   = 0; // nodes that became active or free (all ranks)
+      unsigned int closed    = 0; // of them, nodes that became active (all ranks)
       unsigned int pulling   = 0; // active nodes whose contact force pulls (freed only if `release`)
       double       violation = 0; // deepest penetration, or largest gap of an active node
     };

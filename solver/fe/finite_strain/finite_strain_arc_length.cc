@@ -79,6 +79,7 @@ namespace compliant
     }
 
     void begin_correction() override { iteration = 0; }
+    bool has_own_conditions() const override { return p.contact != nullptr; }
     // The obstacles' and the pairs' active sets of the state the path stands on.
     void step_accepted() override { p.start_contact_step(); }
     void step_abandoned() override { p.restore_contact_state(); }
@@ -134,7 +135,7 @@ namespace compliant
         std::cout << "    contact: " << update.changes << " changes, " << update.pulling << " pulling, violation "
                   << update.violation << std::endl;
       p.contact_seconds += contact_timer.wall_time();
-      closing = update.violation > p.contact->tolerance;
+      closing = update.closed > 0;
       return update.changes == 0 && update.pulling == 0 && update.violation <= p.contact->tolerance;
     }
 

@@ -146,20 +146,10 @@ namespace compliant
     factor->factor(tangent, false);
     const AffineConstraints<double> *held = &homogeneous;
     return [this, factor, held](PETScWrappers::MPI::Vector j) {
-      // C^T j: the functional's weight on a tied DoF (a rigid boundary's node, a held contact
-      // node's constrained component) goes to the DoFs it follows; on a support it is dropped.
-      // (Zeroing it lost what a functional of a rigid boundary's nodes asks of the dual.)
-      PETScWrappers::MPI::Vector moved(locally_owned_dofs, communicator);
-      for (const auto i : locally_owned_dofs)
-        if (const auto *entries = held->get_constraint_entries(i))
-          for (const auto &[k, weight] : *entries)
-            moved(k) += weight * j(i);
-      moved.compress(VectorOperation::add);
       for (const auto i : locally_owned_dofs)
         if (held->is_constrained(i))
           j(i) = 0;
       j.compress(VectorOperation::insert);
-      j += moved;
       PETScWrappers::MPI::Vector z(locally_owned_dofs, communicator);
       factor->solve_transpose(z, j); // K_T^T z = j: the tangent is unsymmetric under follower loads
       held->distribute(z);

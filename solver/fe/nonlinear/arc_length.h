@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -100,7 +101,7 @@ namespace compliant
       // The problem's own conditions hold at this state (contact: the active set has stopped
       // changing, nothing pulls or penetrates); a state converges only where they do.
       bool settled = true;
-      // Constraints were added at this state (contact: nodes found inside an obstacle are held).
+      // Constraints were added at this state (contact: free nodes found inside an obstacle are held).
       bool closing = false;
     };
     // Residual and tangent at (u, lambda); throws StepFailure if the state is inadmissible.
@@ -115,6 +116,9 @@ namespace compliant
     virtual bool   stop_requested() { return false; }
     // A correction (or Newton at a fixed load) starts from a state not in equilibrium.
     virtual void begin_correction() {}
+    // Whether the problem has conditions of its own (contact): a step that seemed to pass a
+    // critical point may have met one of them instead.
+    virtual bool has_own_conditions() const { return false; }
     // The state the path stands on (the start, then every accepted step) and a step abandoned
     // for another from that state: a problem with state of its own (contact's active set) saves
     // and restores it.
@@ -291,7 +295,10 @@ namespace compliant
           dl = settings.end_load_factor - lambda;
           return true;
         }
-      system.linearize(trial, lambda + dl);
+      // The state past the end, with the conditions it holds (a failed Newton may have changed them).
+      if (!system.linearize(trial, lambda + dl).settled)
+        throw StepFailure("Newton at the end load factor failed, and the step's own state no longer holds its "
+                          "contact set");
       warning = "the path ends at load factor " + std::to_string(lambda + dl) + ", past " +
                 std::to_string(settings.end_load_factor) + ": Newton at exactly that load factor did not converge";
       return false;
@@ -409,7 +416,8 @@ namespace compliant
           {
             // Approach it again in shorter steps, so that the cubic locates it closely.
             approaching     = true;
-            approach_ends   = arc_length + 1.5 * step;
+            approach_ends   = system.has_own_conditions() ? arc_length + 1.5 * step :
+                                                                  std::numeric_limits<double>::infinity();
             step        = std::max(step / settings.critical_refinement, settings.minimum_step * unit);
             linearized_here = false;
             system.step_abandoned();
