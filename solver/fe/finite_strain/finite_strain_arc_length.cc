@@ -65,7 +65,7 @@ namespace compliant
         }
       p.tangent_assembly_seconds += timer.wall_time();
       const double residual = rhs.l2_norm(), scale = full.l2_norm(), load_norm = load.l2_norm();
-      near_equilibrium      = residual <= release_residual * scale;
+      near_equilibrium      = residual <= p.contact_release_residual * scale;
       ++iteration;
       if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(p.communicator) == 0)
         std::cout << "    lambda " << lambda << " residual " << residual << " scale " << scale << " load "
@@ -121,21 +121,13 @@ namespace compliant
     bool   stop_requested() override { return p.stop_requested && p.stop_requested(); }
 
   private:
-    // The contact active set at the state in `ghosted` (as FiniteStrainNewtonSystem does): true
-    // when it no longer changes, nothing pulls and nothing penetrates beyond the tolerance.
+    // The contact active set at the state in `ghosted`: true when it no longer changes, nothing
+    // pulls and nothing penetrates beyond the tolerance. Contact forces free a node only once the
+    // corrections are near equilibrium for the set.
     bool update_contact(const double lambda, bool &closing)
     {
-      Timer contact_timer;
-      p.assemble(ghosted, lambda, &p.hanging_node_constraints, false, full);
-      const double force_tolerance = p.settings.residual_tolerance * full.l2_norm();
-      // Contact forces free a node only once the corrections are near equilibrium for the set.
-      const auto update =
-        p.contact->update_active_set(ghosted, full, lambda, iteration > 0 && near_equilibrium, force_tolerance);
-      if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(p.communicator) == 0)
-        std::cout << "    contact: " << update.changes << " changes, " << update.pulling << " pulling, violation "
-                  << update.violation << std::endl;
-      p.contact_seconds += contact_timer.wall_time();
-      closing = update.closed > 0;
+      const auto update = p.update_contact_set(ghosted, lambda, iteration > 0 && near_equilibrium, full);
+      closing           = update.closed > 0;
       return update.changes == 0 && update.pulling == 0 && update.violation <= p.contact->tolerance;
     }
 
@@ -144,7 +136,6 @@ namespace compliant
     AffineConstraints<double>  constraints, load_constraints;
     unsigned int               iteration        = 0;
     bool                       near_equilibrium = false;
-    static constexpr double    release_residual = 1e-2; // as FiniteStrainNewtonSystem's
     DirectFactorization        factorization;
     const bool                 symmetric;
     types::global_dof_index    pressure_dofs = 0;

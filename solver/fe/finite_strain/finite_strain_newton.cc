@@ -55,16 +55,9 @@ namespace compliant
         {
           // The active set at this state, from its contact forces (the unconstrained residual);
           // the line search then measures residuals with it.
-          Timer contact_timer;
-          p.assemble(ghosted, target, &p.hanging_node_constraints, false, full);
-          const double force_tolerance = p.settings.residual_tolerance * full.l2_norm();
-          const auto update = p.contact->update_active_set(ghosted, full, target, near_equilibrium, force_tolerance);
+          const auto update = p.update_contact_set(ghosted, target, near_equilibrium, full);
           settled = update.changes == 0 && update.pulling == 0 && update.violation <= p.contact->tolerance;
-          if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(p.communicator) == 0)
-            std::cout << "    contact: " << update.changes << " changes, " << update.pulling << " pulling, violation "
-                      << update.violation << std::endl;
-          homogeneous       = p.make_constraints(target, true, ghosted);
-          p.contact_seconds += contact_timer.wall_time();
+          homogeneous = p.make_constraints(target, true, ghosted);
         }
       constraints = p.make_constraints(target, false, ghosted);
       matrix_free = p.matrix_free_tangent();
@@ -95,7 +88,7 @@ namespace compliant
       if (iteration > 0)
         result.scale = full.l2_norm();
       // Contact forces are trusted to free a node once Newton is near equilibrium for the set.
-      near_equilibrium = iteration > 0 && result.residual <= release_residual * result.scale;
+      near_equilibrium = iteration > 0 && result.residual <= p.contact_release_residual * result.scale;
       return result;
     }
 
@@ -206,10 +199,6 @@ namespace compliant
     Vector                          trial_state, trial_ghosted, trial_rhs, trial_full;
     bool                            has_trial = false;
     bool                            near_equilibrium = false;
-    // The residual, relative to the force scale, below which the state's contact forces decide
-    // which nodes are freed (quadratic convergence: the next state is then at equilibrium to
-    // about its square).
-    static constexpr double release_residual = 1e-2;
   };
 
   template <int dim>

@@ -245,6 +245,22 @@ namespace compliant
   }
 
   template <int dim>
+  typename ContactSet<dim>::Update FiniteStrainProblem<dim>::update_contact_set(const PETScWrappers::MPI::Vector &u,
+                                                                               const double lambda, const bool release,
+                                                                               PETScWrappers::MPI::Vector &full)
+  {
+    Timer contact_timer;
+    assemble(u, lambda, &hanging_node_constraints, false, full);
+    const double force_tolerance = settings.residual_tolerance * full.l2_norm();
+    const auto   update          = contact->update_active_set(u, full, lambda, release, force_tolerance);
+    if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(communicator) == 0)
+      std::cout << "    contact: " << update.changes << " changes, " << update.pulling << " pulling, violation "
+                << update.violation << std::endl;
+    contact_seconds += contact_timer.wall_time();
+    return update;
+  }
+
+  template <int dim>
   void FiniteStrainProblem<dim>::restore_contact_state()
   {
     // A failed Newton leaves the nodes it held or freed: back to the converged state's set (a

@@ -108,6 +108,15 @@ namespace compliant
     // Contact: back to the state saved by start_contact_step (after a failed Newton or a
     // rejected step).
     void restore_contact_state();
+    // The contact active set at state u (ghosted) and load factor lambda, from its contact forces
+    // (full: the unconstrained residual there, assembled here); `release` lets pulling nodes go.
+    // Shared by Newton and the arc-length corrector. Collective.
+    typename ContactSet<dim>::Update update_contact_set(const dealii::PETScWrappers::MPI::Vector &u, double lambda,
+                                                        bool release, dealii::PETScWrappers::MPI::Vector &full);
+    // The residual, relative to the force scale, below which a state's contact forces decide
+    // which nodes are freed (quadratic convergence: the next state is then at equilibrium to
+    // about its square).
+    static constexpr double contact_release_residual = 1e-2;
     // Contact between boundaries (Contact/Pairs): a held node's constraint reaches the master
     // surface's nodes it faces now, so the tangent's pattern is rebuilt whenever the constraints
     // refer to a coupling it lacks. Collective.
