@@ -69,6 +69,7 @@ BAD = {
     "section_rectangle": ("section", "n=0", "n >= 1"),
     "section_triangle": ("section", "a=0", "a > 0"),
     "section_tube": ("section", "r=10", "0 < r < R"),
+    "spline_notch_2d": ("plane stress", "d=3", "0 < d < H"),
     "spline_profile_2d": ("plane stress", "d=1", "0 <= d < h/2"),
     "thick_cylinder_2d": ("plane stress", "b=5", "0 < a < b"),
     "thick_cylinder_3d": ("3d", "nz=0", "nz >= 1"),
