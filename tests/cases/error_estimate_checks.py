@@ -142,8 +142,9 @@ effectivities("turned 3D cantilever Q2 2x2x6", "cantilever_3d_end_rotation.prm",
 # with an elliptical hole (converged Q3: at the tip the field's and the quadratic boundary's errors
 # have opposite signs, and the estimate, whose enriched model is mapped at degree 3, sees both:
 # effectivity 2.17 here) and the bar with spline-profiled notches (converged Q3). The notch's root
-# stress is a documented limit, not asserted: on meshes with 2-4 cells across its radius the Q3
-# enriched solution is hardly better than the Q2 model there (effectivities 1.33, 0.21, 0.62).
+# stress is a documented limit, not asserted: on root cells 0.86 and 0.43 of its radius long the Q3
+# enriched solution is further from the reference than the Q2 model (effectivities 1.33, by chance,
+# and 0.21; 0.62 on cells of 0.22).
 OMEGA = 1e-3
 BB = E * OMEGA / (2 * math.pi)
 AB = BB * 2 * math.log(B / A) / (1 / A**2 - 1 / B**2)
