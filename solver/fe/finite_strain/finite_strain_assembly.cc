@@ -69,12 +69,66 @@ namespace compliant
       const unsigned int                   n, n_q_points, n_face_q_points;
       std::vector<Tensor<2, dim>>          grad_u, face_grad_u;
       std::vector<double>                  p_values;
-      std::vector<Tensor<2, dim>>          grad_phi, grad_phi_S;
+      // A displacement shape function has one nonzero component: its gradient is e_c (x) grad N,
+      // and the geometric stiffness grad phi_i S : grad phi_j is (S grad N_i) . grad N_j when
+      // both have the same component c, else zero.
+      std::vector<Tensor<2, dim>>          grad_phi;
+      std::vector<Tensor<1, dim>>          grad_N, S_grad_N;
+      std::vector<unsigned int>            component;
+      // The same per-i data laid out by entry for the displacement-only pair loop: dE with its
+      // off-diagonal entries doubled (so that dE_i : C dE_j is one dot product of the stored
+      // entries), C dE, and grad N_j under each component c (zero where j's component is not c).
+      static constexpr unsigned int        n_sym = dim * (dim + 1) / 2;
+      std::vector<double>                  dE_entries, C_dE_entries, grad_N_by_component;
       std::vector<SymmetricTensor<2, dim>> dE, C_dE;
       std::vector<Tensor<1, dim>>          phi;
       std::vector<double>                  q_phi;
       std::vector<bool>                    is_u;
       Vector<double>                       field_value, pressure_value;
+
+      // Row i of the displacement-only tangent, j <= i: dE_i : C dE_j + (S grad N_i) . grad N_j
+      // (same component), times JxW; a loop over j on contiguous entries.
+      void add_displacement_row(const unsigned int i, const double JxW)
+      {
+        double a[n_sym], g[dim];
+        for (unsigned int m = 0; m < n_sym; ++m)
+          a[m] = dE_entries[m * n + i] * JxW;
+        for (unsigned int d = 0; d < dim; ++d)
+          g[d] = S_grad_N[i][d] * JxW;
+        const double *C_dE_data = C_dE_entries.data();
+        const double *grad_N_c  = grad_N_by_component.data() + component[i] * dim * n;
+        double       *row       = &cell_matrix(i, 0);
+        // On SIMD lanes (fast_solver/simd.h) while a whole chunk of j fits, then one by one.
+        using Lanes                  = fast_solver::SimdArray<double>;
+        constexpr unsigned int lanes = Lanes::size();
+        unsigned int           j     = 0;
+        for (; j + lanes <= i + 1; j += lanes)
+          {
+            Lanes k = 0., entry;
+            for (unsigned int m = 0; m < n_sym; ++m)
+              {
+                entry.load(C_dE_data + m * n + j);
+                k += a[m] * entry;
+              }
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                entry.load(grad_N_c + d * n + j);
+                k += g[d] * entry;
+              }
+            entry.load(row + j);
+            entry += k;
+            entry.store(row + j);
+          }
+        for (; j <= i; ++j)
+          {
+            double k = 0;
+            for (unsigned int m = 0; m < n_sym; ++m)
+              k += a[m] * C_dE_data[m * n + j];
+            for (unsigned int d = 0; d < dim; ++d)
+              k += g[d] * grad_N_c[d * n + j];
+            row[j] += k;
+          }
+      }
     };
 
     template <int dim, typename Response>
@@ -112,7 +166,12 @@ namespace compliant
       , face_grad_u(n_face_q_points)
       , p_values(n_q_points)
       , grad_phi(n)
-      , grad_phi_S(n)
+      , grad_N(n)
+      , S_grad_N(n)
+      , component(n)
+      , dE_entries(n_sym * n)
+      , C_dE_entries(n_sym * n)
+      , grad_N_by_component(dim * dim * n)
       , dE(n)
       , C_dE(n)
       , phi(n)
@@ -122,7 +181,10 @@ namespace compliant
       , pressure_value(1)
     {
       for (unsigned int i = 0; i < n; ++i)
-        is_u[i] = fe.system_to_component_index(i).first < dim;
+        {
+          component[i] = fe.system_to_component_index(i).first;
+          is_u[i]      = component[i] < dim;
+        }
     }
 
     template <int dim, typename Response>
@@ -164,7 +226,16 @@ namespace compliant
                   phi[i]      = fe_values[displacement].value(i, q);
                   dE[i]       = symmetrize(transpose(F) * grad_phi[i]);
                   C_dE[i]     = response.tangent * dE[i];
-                  grad_phi_S[i] = grad_phi[i] * S; // geometric stiffness, once per i
+                  grad_N[i]   = grad_phi[i][component[i]];
+                  S_grad_N[i] = S * grad_N[i]; // geometric stiffness, once per i
+                  for (unsigned int m = 0; m < n_sym; ++m)
+                    {
+                      dE_entries[m * n + i]   = (m < dim ? 1. : 2.) * dE[i].access_raw_entry(m);
+                      C_dE_entries[m * n + i] = C_dE[i].access_raw_entry(m);
+                    }
+                  for (unsigned int c = 0; c < dim; ++c)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      grad_N_by_component[(c * dim + d) * n + i] = c == component[i] ? grad_N[i][d] : 0.;
                 }
               else
                 q_phi[i] = fe_values[pressure].value(i, q);
@@ -179,11 +250,16 @@ namespace compliant
                 continue;
               // The volume tangent is symmetric: the lower triangle, mirrored after the
               // quadrature loop (the follower-pressure part is not symmetric).
+              if (!mixed)
+                {
+                  add_displacement_row(i, JxW);
+                  continue;
+                }
               for (unsigned int j = 0; j <= i; ++j)
                 {
                   double k = 0;
                   if (is_u[i] && is_u[j])
-                    k = dE[i] * C_dE[j] + scalar_product(grad_phi_S[i], grad_phi[j]);
+                    k = dE[i] * C_dE[j] + (component[i] == component[j] ? S_grad_N[i] * grad_N[j] : 0.);
                   else if (is_u[i])
                     k = (dE[i] * Ci) * q_phi[j];
                   else if (is_u[j])
