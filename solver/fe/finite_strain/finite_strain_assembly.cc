@@ -87,9 +87,11 @@ namespace compliant
       Vector<double>                       field_value, pressure_value;
 
       // Row i of the displacement-only tangent, j <= i: dE_i : C dE_j + (S grad N_i) . grad N_j
-      // (same component), times JxW; a loop over j on contiguous entries.
+      // (same component), times JxW; a loop over j on contiguous entries. SimdArray comes from
+      // fast_solver/simd.h, which the build puts first into every translation unit.
       void add_displacement_row(const unsigned int i, const double JxW)
       {
+        Assert(!mixed && component[i] < dim, ExcInternalError());
         double a[n_sym], g[dim];
         for (unsigned int m = 0; m < n_sym; ++m)
           a[m] = dE_entries[m * n + i] * JxW;
@@ -225,9 +227,13 @@ namespace compliant
                   grad_phi[i] = fe_values[displacement].gradient(i, q);
                   phi[i]      = fe_values[displacement].value(i, q);
                   dE[i]       = symmetrize(transpose(F) * grad_phi[i]);
+                  if (!with_matrix) // a residual alone needs dE only
+                    continue;
                   C_dE[i]     = response.tangent * dE[i];
                   grad_N[i]   = grad_phi[i][component[i]];
                   S_grad_N[i] = S * grad_N[i]; // geometric stiffness, once per i
+                  if (mixed)
+                    continue;
                   for (unsigned int m = 0; m < n_sym; ++m)
                     {
                       dE_entries[m * n + i]   = (m < dim ? 1. : 2.) * dE[i].access_raw_entry(m);
