@@ -51,6 +51,14 @@ def _commit():
     return commit + (" with local changes" if dirty else "")
 
 
+def _blas():
+    """The BLAS Debian's alternatives give MUMPS (and every peer linked to libblas.so.3)."""
+    target = os.path.realpath("/usr/lib/x86_64-linux-gnu/libblas.so.3")
+    if "openblas" in target:
+        return "OpenBLAS " + _package("libopenblas0-serial" if "serial" in target else "libopenblas0-pthread")
+    return ("reference BLAS " + _package("libblas3")) if os.path.exists(target) else "unknown"
+
+
 def versions():
     """name -> version of this solver and everything a benchmark's figures depend on."""
     dolfinx = _output(["/usr/bin/python3", "-c", "import dolfinx; print(dolfinx.__version__)"])
@@ -60,6 +68,7 @@ def versions():
         "PETSc": _package("libpetsc-real3.18-dev"),
         "gmsh": _package("gmsh"),
         "Open MPI": _package("openmpi-bin"),
+        "BLAS": _blas(),
         "FEniCSx (dolfinx)": dolfinx or "not installed",
         "CalculiX (ccx)": _package("calculix-ccx"),
     }
