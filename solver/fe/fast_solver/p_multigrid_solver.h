@@ -42,12 +42,15 @@ namespace compliant::fast_solver
     double       smoothing_range    = 0;  // eigenvalue range Chebyshev damps
     // Degree-1 level: automatic = MUMPS for long cells (aspect ratio > 3) while the degree-1
     // system has at most direct_coarse_limit (2D) or direct_coarse_limit_3d DoFs, else AMG.
-    // A 3D factorization grows much faster than N: on the 3D blade hinge (cells 10:1, 78k
-    // degree-1 DoFs) MUMPS took 11.6 s of set-up against GAMG's 1.3 s, whole solve 19.6 s
-    // against 14.8 s; at 34k they were even (5.8 s, 6.1 s).
+    // A 3D factorization grows much faster than N, but GAMG on long cells needs tens of inner
+    // iterations. With OpenBLAS and LDL^T (2 ranks), MUMPS factors 3D degree-1 levels of 63k,
+    // 112k and 203k DoFs in 0.98, 2.65 and 6.1 s (480, 794 and 1404 MB per rank); the 12:1
+    // torsion bar at 468k DoFs (63k degree-1) solved in 5.4 s against GAMG's 21.0 s (88 inner
+    // iterations per V-cycle), the 10:1 blade hinge at 581k (78k) in 4.4 s against 4.8 s.
+    // (With the reference BLAS and LU, the hinge's factorization took 11.6 s: the old limit 50k.)
     enum class Coarse { automatic, amg, direct } coarse = Coarse::automatic;
     double       direct_coarse_limit    = 250000;
-    double       direct_coarse_limit_3d = 50000;
+    double       direct_coarse_limit_3d = 150000;
     // AMG: 0 = one V-cycle; > 0 = CG + AMG to this residual reduction, and the outer CG becomes
     // flexible (the preconditioner then varies from one application to the next).
     double       coarse_tolerance   = 0.03;

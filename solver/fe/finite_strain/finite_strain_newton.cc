@@ -30,7 +30,6 @@ namespace compliant
       , rhs(p.locally_owned_dofs, p.communicator)
       , full(p.locally_owned_dofs, p.communicator)
       , ghosted(p.locally_owned_dofs, p.locally_relevant_dofs, p.communicator)
-      , direct{SolverMethod::direct, 1e-12, 1, p.parameters.petsc_options}
       , amg{SolverMethod::cg_amg, 1e-10, 500, p.parameters.petsc_options}
       , trial_ghosted(p.locally_owned_dofs, p.locally_relevant_dofs, p.communicator)
     {
@@ -115,7 +114,7 @@ namespace compliant
             p.assemble(ghosted, target, &constraints, true, rhs);
             p.tangent_assembly_seconds += reassembly_timer.wall_time();
             du = 0;
-            solve_linear_system(p.tangent, du, rhs, {}, direct);
+            p.solve_direct(du, rhs);
           }
       else if (iterative && !p.iterative_failed)
         try
@@ -126,10 +125,10 @@ namespace compliant
           {
             fall_back_to_direct("CG + GAMG", e.what());
             du = 0;
-            solve_linear_system(p.tangent, du, rhs, {}, direct);
+            p.solve_direct(du, rhs);
           }
       else
-        solve_linear_system(p.tangent, du, rhs, {}, direct);
+        p.solve_direct(du, rhs);
       ++p.total_linear_solves;
       p.linear_solve_seconds += solve_timer.wall_time();
       constraints.distribute(du);
@@ -191,7 +190,7 @@ namespace compliant
     const double                    target;
     Vector                          rhs, full, ghosted;
     AffineConstraints<double>       homogeneous, constraints;
-    const LinearSolverSettings      direct, amg;
+    const LinearSolverSettings      amg;
     bool                            iterative = false, matrix_free = false;
     std::vector<Vector>             modes;
     double                          last_residual = 0;

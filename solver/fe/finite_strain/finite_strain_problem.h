@@ -36,6 +36,8 @@ namespace compliant::fast_solver
 
 namespace compliant
 {
+  class DirectFactorization; // linear_algebra/direct_factorization.h
+
   struct FiniteStrainSettings
   {
     std::string law = "neo-Hookean";
@@ -257,6 +259,12 @@ namespace compliant
                                    const dealii::PETScWrappers::MPI::Vector &rhs,
                                    const dealii::AffineConstraints<double>  &constraints,
                                    dealii::PETScWrappers::MPI::Vector       &du);
+    // du = K^-1 rhs on the assembled tangent by MUMPS, kept from one Newton iteration to the
+    // next: the analysis is redone only when the tangent's sparsity changes, and a symmetric
+    // tangent is factored LDL^T (finite_strain_linear_solver.cc).
+    void solve_direct(dealii::PETScWrappers::MPI::Vector &du, const dealii::PETScWrappers::MPI::Vector &rhs);
+    bool symmetric_tangent() const;
+    std::shared_ptr<DirectFactorization> newton_factorization;
     void add_level_constraints(const dealii::DoFHandler<dim>     &dofs,
                                dealii::AffineConstraints<double> &constraints) const;
 

@@ -23,31 +23,45 @@ namespace compliant
   }
 
   void DirectFactorization::factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, const bool symmetric_matrix,
-                                   const bool with_options)
+                                   const bool with_options, const bool inertia)
   {
-    if (ksp != nullptr)
-      KSPDestroy(&ksp);
-    symmetric = symmetric_matrix;
-    Mat A     = matrix;
-    PC  pc;
-    Mat factor;
-    if (symmetric)
-      check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(symmetric)");
-    check(KSPCreate(matrix.get_mpi_communicator(), &ksp), "KSPCreate");
-    check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
-    check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-    check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU), "PCSetType");
-    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
-    if (symmetric)
+    Mat        A = matrix;
+    PC         pc;
+    const bool kind_kept = ksp != nullptr && factored == A && symmetric == symmetric_matrix &&
+                           with_inertia == (symmetric_matrix && inertia);
+    if (kind_kept)
       {
-        check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
-        check(PCFactorGetMatrix(pc, &factor), "PCFactorGetMatrix");
-        check(MatMumpsSetIcntl(factor, 13, 1), "MatMumpsSetIcntl(13)"); // inertia over all ranks
-        check(MatMumpsSetIcntl(factor, 24, 1), "MatMumpsSetIcntl(24)"); // null pivots, which the inertia needs
+        // New values on the kept pattern: PCSetUp sees the same nonzero state and refactors
+        // numerically on MUMPS's existing analysis.
+        check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+        check(KSPGetPC(ksp, &pc), "KSPGetPC");
       }
-    if (with_options)
-      check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+    else
+      {
+        if (ksp != nullptr)
+          KSPDestroy(&ksp);
+        symmetric    = symmetric_matrix;
+        with_inertia = symmetric && inertia;
+        factored     = A;
+        if (symmetric)
+          check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(symmetric)");
+        check(KSPCreate(matrix.get_mpi_communicator(), &ksp), "KSPCreate");
+        check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+        check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+        check(KSPGetPC(ksp, &pc), "KSPGetPC");
+        check(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU), "PCSetType");
+        check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
+        if (with_inertia)
+          {
+            Mat factor;
+            check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+            check(PCFactorGetMatrix(pc, &factor), "PCFactorGetMatrix");
+            check(MatMumpsSetIcntl(factor, 13, 1), "MatMumpsSetIcntl(13)"); // inertia over all ranks
+            check(MatMumpsSetIcntl(factor, 24, 1), "MatMumpsSetIcntl(24)"); // null pivots, which the inertia needs
+          }
+        if (with_options)
+          check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+      }
     check(KSPSetUp(ksp), "KSPSetUp (factorization)");
     PCFailedReason reason;
     check(PCGetFailedReason(pc, &reason), "PCGetFailedReason");
@@ -55,8 +69,11 @@ namespace compliant
     const int failed = dealii::Utilities::MPI::max(reason != PC_NOERROR ? static_cast<int>(reason) : 0,
                                                    matrix.get_mpi_communicator());
     if (failed != 0)
-      throw std::runtime_error("the factorization failed (PETSc reason " + std::to_string(failed) +
-                               "): the matrix is singular");
+      {
+        KSPDestroy(&ksp); // a failed factor is not kept for the next call
+        throw std::runtime_error("the factorization failed (PETSc reason " + std::to_string(failed) +
+                                 "): the matrix is singular");
+      }
   }
 
   void DirectFactorization::solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const
@@ -85,8 +102,8 @@ namespace compliant
 
   unsigned int DirectFactorization::negative_eigenvalues() const
   {
-    if (!symmetric)
-      throw std::logic_error("the inertia needs a symmetric (LDL^T) factorization");
+    if (!with_inertia)
+      throw std::logic_error("the inertia needs a symmetric (LDL^T) factorization made with inertia = true");
     PC       pc;
     Mat      factor;
     PetscInt negative = 0, zero = 0, positive = 0;

@@ -19,10 +19,16 @@ namespace compliant
     DirectFactorization &operator=(const DirectFactorization &) = delete;
     ~DirectFactorization();
 
-    // Factors the matrix: LDL^T if symmetric (the inertia is then known), LU otherwise. The
-    // matrix must outlive the solves. Throws std::runtime_error if PETSc fails.
+    // Factors the matrix: LDL^T if symmetric, LU otherwise. The matrix must outlive the solves.
+    // Throws std::runtime_error if PETSc fails.
     // with_options: 'Linear solver/PETSc options' (inserted by the caller) apply to the solver.
-    void factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, bool symmetric, bool with_options = false);
+    // inertia (symmetric only): count the negative eigenvalues, with MUMPS's null-pivot detection
+    // and without ScaLAPACK at the root (ICNTL 13, 24); a plain solve leaves both off.
+    // Called again on the same matrix object with the same kind, the factorization keeps MUMPS's
+    // analysis (ordering, symbolic factors) while the sparsity pattern is unchanged: PETSc redoes
+    // the numerical factorization alone, as a Newton iteration needs.
+    void factor(dealii::PETScWrappers::MPI::SparseMatrix &matrix, bool symmetric, bool with_options = false,
+                bool inertia = true);
     void solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const;
     // The same on bare PETSc vectors (a preconditioner's coarse level); x and b distinct.
     void solve(Vec x, Vec b) const;
@@ -33,6 +39,7 @@ namespace compliant
 
   private:
     KSP  ksp       = nullptr;
-    bool symmetric = false;
+    Mat  factored  = nullptr; // the matrix of the kept analysis
+    bool symmetric = false, with_inertia = false;
   };
 } // namespace compliant
