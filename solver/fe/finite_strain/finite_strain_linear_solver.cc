@@ -41,9 +41,11 @@ namespace compliant
   bool FiniteStrainProblem<dim>::matrix_free_tangent() const
   {
     const SolverMethod method = parameters.solver_method;
-    // auto: measured on cases/benchmarks/flexure_finite_strain.prm, the p-multigrid halves the
-    // whole run at 25k DoFs in 3D and wins more with size; MUMPS is faster on small and 2D
-    // models (2D elastica, 2k DoFs: 0.4 s of solves against 0.8 s).
+    // auto: measured on cases/benchmarks/flexure_finite_strain.prm (2 ranks, OpenBLAS, MUMPS
+    // LDL^T on a kept analysis), the p-multigrid's time_total against MUMPS's: 0.19 / 0.16 s at
+    // 585 DoFs, 0.20 / 0.25 at 945, 0.38 / 0.93 at 3.3k (reduced integration 0.72 / 1.00), 0.79 /
+    // 1.81 at 7.1k, 2.6 / 7.6 at 20.7k: the tangent's assembly is what MUMPS pays beyond its
+    // factorization. MUMPS stays on 2D models (2D elastica, 2k DoFs: 0.4 s of solves against 0.8 s).
     const bool wanted = method == SolverMethod::matrix_free ||
                         (method == SolverMethod::automatic && dim == 3 && dof_handler.n_dofs() >= auto_matrix_free_dofs);
     return wanted && !iterative_failed && !mixed && follower_pressures.empty() &&

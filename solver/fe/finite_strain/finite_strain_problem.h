@@ -165,7 +165,7 @@ namespace compliant
     // Whether Newton steps use the matrix-free p-multigrid (Linear solver/Method auto or
     // matrix-free, degree >= 2, displacement-only, no follower pressure), and why not.
     bool        matrix_free_tangent() const;
-    static constexpr unsigned int auto_matrix_free_dofs = 20000; // 3D, Method = auto
+    static constexpr unsigned int auto_matrix_free_dofs = 1000; // 3D, Method = auto
     std::string linear_solver_description() const;
 
     // f_int(u) - f_ext(u) without constraints: the support reactions.
