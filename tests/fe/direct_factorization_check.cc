@@ -66,3 +66,75 @@ TEST(DirectFactorization, SolvesWithTheMatrixAndItsTranspose)
   residual -= y;
   EXPECT_GT(residual.linfty_norm(), 1e-3 * x.linfty_norm()); // the transpose is a different system
 }
+
+// A second factor() on the same matrix object keeps MUMPS's analysis and redoes only the numbers
+// (a Newton iteration's new tangent): the solve must be that of the new values, LU or LDL^T. A
+// factor kept stale would leave a residual of the order of the change (here 2 on the diagonal).
+TEST(DirectFactorization, RefactorsNewValuesOnTheKeptPattern)
+{
+  const unsigned int n = 40;
+  const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const unsigned int size = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  IndexSet           owned(n);
+  owned.add_range(rank * n / size, (rank + 1) * n / size);
+  for (const bool symmetric : {false, true})
+    {
+      PETScWrappers::MPI::SparseMatrix a;
+      fill(a, owned, n);
+      if (symmetric) // 4 on the diagonal, -1 on both sides
+        {
+          for (const auto i : owned)
+            if (i + 1 < n)
+              a.set(i, i + 1, -1.);
+          a.compress(VectorOperation::insert);
+        }
+      PETScWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b), residual(b);
+      for (const auto i : owned)
+        b(i) = std::sin(1. + i);
+      b.compress(VectorOperation::insert);
+
+      compliant::DirectFactorization factor;
+      for (const double diagonal : {4., 6., 3.})
+        {
+          for (const auto i : owned)
+            a.set(i, i, diagonal);
+          a.compress(VectorOperation::insert);
+          factor.factor(a, symmetric, false, false);
+          factor.solve(x, b);
+          a.vmult(residual, x);
+          residual -= b;
+          EXPECT_LT(residual.linfty_norm(), 1e-13 * b.linfty_norm()) << (symmetric ? "LDL^T" : "LU")
+                                                                     << ", diagonal " << diagonal;
+        }
+    }
+}
+
+// The inertia after a refactorization is that of the new values: diagonal d - 2 cos(k pi / (n+1))
+// for the symmetric tridiagonal (d, -1, -1) has as many negative eigenvalues as k with
+// 2 cos(k pi / (n + 1)) > d.
+TEST(DirectFactorization, InertiaFollowsTheNewValues)
+{
+  const unsigned int n = 40;
+  const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const unsigned int size = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  IndexSet           owned(n);
+  owned.add_range(rank * n / size, (rank + 1) * n / size);
+  PETScWrappers::MPI::SparseMatrix a;
+  fill(a, owned, n);
+  for (const auto i : owned)
+    if (i + 1 < n)
+      a.set(i, i + 1, -1.);
+  a.compress(VectorOperation::insert);
+  compliant::DirectFactorization factor;
+  for (const double d : {4., 1.5, -0.3})
+    {
+      for (const auto i : owned)
+        a.set(i, i, d);
+      a.compress(VectorOperation::insert);
+      factor.factor(a, true);
+      unsigned int expected = 0;
+      for (unsigned int k = 1; k <= n; ++k)
+        expected += 2 * std::cos(k * M_PI / (n + 1)) > d;
+      EXPECT_EQ(factor.negative_eigenvalues(), expected) << "diagonal " << d;
+    }
+}
