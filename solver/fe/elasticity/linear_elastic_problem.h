@@ -160,7 +160,7 @@ namespace compliant
     // Solves with the matrix-free p-multigrid; false if it did not converge and 'auto' allows
     // falling back (solver_note says so).
     bool solve_matrix_free(dealii::PETScWrappers::MPI::Vector &x);
-    // MUMPS LU of system_matrix, factored at the first solve after an assembly; returns 1.
+    // MUMPS LDL^T of system_matrix, factored at the first solve after an assembly; returns 1.
     unsigned int solve_direct(dealii::PETScWrappers::MPI::Vector &x);
     // The two-level solve from coarse_twin; false (x zero) where it does not apply or fails.
     bool solve_from_coarse_twin(dealii::PETScWrappers::MPI::Vector &x);

@@ -26,6 +26,7 @@
 #include "fast_solver/coarse_level_solver.h"
 #include "fast_solver/level_transfer.h"
 #include "mesh/cell_aspect_ratio.h"
+#include "mesh/memory_estimate.h"
 #include "linear_algebra/rigid_body_modes.h"
 
 namespace compliant::fast_solver
@@ -187,10 +188,14 @@ namespace compliant::fast_solver
     stats.smoothing_degree     = settings.smoothing_degree > 0 ?
                                    settings.smoothing_degree :
                                    std::clamp<unsigned int>(std::lround(std::sqrt(stats.smoothing_range)) - 1, 4, 16);
+    // A 3D factor takes about 14 kB per degree-1 DoF over all ranks (measured at 63k-203k DoFs):
+    // MUMPS only where that leaves half the available memory to the rest.
+    const double n_coarse      = L.dofs[0]->n_dofs();
+    const double memory        = available_memory();
+    const bool   factor_fits   = dim < 3 || memory <= 0 || 14e3 * n_coarse <= 0.5 * memory;
     stats.coarse_direct        = settings.coarse == PMultigridSettings::Coarse::direct ||
-                          (settings.coarse == PMultigridSettings::Coarse::automatic && a > 3 &&
-                           L.dofs[0]->n_dofs() <= (dim == 3 ? settings.direct_coarse_limit_3d :
-                                                                  settings.direct_coarse_limit));
+                          (settings.coarse == PMultigridSettings::Coarse::automatic && a > 3 && factor_fits &&
+                           n_coarse <= (dim == 3 ? settings.direct_coarse_limit_3d : settings.direct_coarse_limit));
     if (stats.coarse_reused)
       L.coarse = reused, stats.coarse_direct = reused->direct;
     else

@@ -158,7 +158,8 @@ namespace compliant
         settings.petsc_options      = parameters.petsc_options;
         // The tangent turns with the structure, so the reference rigid-body modes GAMG would be
         // given are only approximate: factor the degree-1 level while it is small.
-        if (dim * n_global_vertices(triangulation) <= settings.direct_coarse_limit)
+        if (dim * n_global_vertices(triangulation) <=
+            (dim == 3 ? settings.direct_coarse_limit_3d : settings.direct_coarse_limit))
           settings.coarse = fast_solver::PMultigridSettings::Coarse::direct;
         tangent_multigrid = std::make_unique<TangentMultigrid>(
           *mapping, dof_handler,

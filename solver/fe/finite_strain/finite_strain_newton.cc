@@ -221,8 +221,12 @@ namespace compliant
         // solution is untouched: the converged state of the previous step remains, and so does
         // its friction state (stick, slip, anchors) rather than the failed Newton's
         restore_contact_state();
+        newton_factorization.reset();
         throw StepFailure(e.what());
       }
+    // The factor serves this step's iterations only: the stability check, a buckling or dual
+    // solve and the next step's growing tangent must not find a second one held beside theirs.
+    newton_factorization.reset();
     solution    = u;
     load_factor = target;
     return report;

@@ -26,10 +26,38 @@ namespace compliant
                                    const bool with_options, const bool inertia)
   {
     Mat        A = matrix;
-    PC         pc;
     const bool kind_kept = ksp != nullptr && factored == A && symmetric == symmetric_matrix &&
                            with_inertia == (symmetric_matrix && inertia);
-    if (kind_kept)
+    if (!kind_kept && ksp != nullptr)
+      KSPDestroy(&ksp);
+    int failed = 0;
+    try
+      {
+        failed = factor_once(matrix, symmetric_matrix, with_options, inertia);
+      }
+    catch (...)
+      {
+        KSPDestroy(&ksp); // a half-built solver is not kept for the next call
+        throw;
+      }
+    if (failed != 0)
+      {
+        KSPDestroy(&ksp); // a failed factor is not kept for the next call
+        // The kept analysis (ordering, scaling, workspace) was made for earlier values: once
+        // more from scratch before giving up.
+        if (kind_kept)
+          return factor(matrix, symmetric_matrix, with_options, inertia);
+        throw std::runtime_error("the factorization failed (PETSc reason " + std::to_string(failed) +
+                                 "): the matrix is singular, or MUMPS ran out of workspace");
+      }
+  }
+
+  int DirectFactorization::factor_once(dealii::PETScWrappers::MPI::SparseMatrix &matrix, const bool symmetric_matrix,
+                                       const bool with_options, const bool inertia)
+  {
+    Mat A = matrix;
+    PC  pc;
+    if (ksp != nullptr)
       {
         // New values on the kept pattern: PCSetUp sees the same nonzero state and refactors
         // numerically on MUMPS's existing analysis.
@@ -38,8 +66,6 @@ namespace compliant
       }
     else
       {
-        if (ksp != nullptr)
-          KSPDestroy(&ksp);
         symmetric    = symmetric_matrix;
         with_inertia = symmetric && inertia;
         factored     = A;
@@ -65,15 +91,9 @@ namespace compliant
     check(KSPSetUp(ksp), "KSPSetUp (factorization)");
     PCFailedReason reason;
     check(PCGetFailedReason(pc, &reason), "PCGetFailedReason");
-    // The reason is per rank: every rank throws, or none.
-    const int failed = dealii::Utilities::MPI::max(reason != PC_NOERROR ? static_cast<int>(reason) : 0,
-                                                   matrix.get_mpi_communicator());
-    if (failed != 0)
-      {
-        KSPDestroy(&ksp); // a failed factor is not kept for the next call
-        throw std::runtime_error("the factorization failed (PETSc reason " + std::to_string(failed) +
-                                 "): the matrix is singular");
-      }
+    // The reason is per rank: every rank fails, or none.
+    return dealii::Utilities::MPI::max(reason != PC_NOERROR ? static_cast<int>(reason) : 0,
+                                       matrix.get_mpi_communicator());
   }
 
   void DirectFactorization::solve(dealii::PETScWrappers::MPI::Vector &x, const dealii::PETScWrappers::MPI::Vector &b) const
