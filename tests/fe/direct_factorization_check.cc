@@ -35,15 +35,39 @@ namespace
       }
     a.compress(VectorOperation::insert);
   }
+
+  // Rows cut in blocks over the ranks (the ctest runs 1 and 2).
+  IndexSet owned_rows(const unsigned int n)
+  {
+    const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const unsigned int size = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    IndexSet           owned(n);
+    owned.add_range(rank * n / size, (rank + 1) * n / size);
+    return owned;
+  }
+
+  // fill() made symmetric: -1 above the diagonal too.
+  void make_symmetric(PETScWrappers::MPI::SparseMatrix &a, const IndexSet &owned, const unsigned int n)
+  {
+    for (const auto i : owned)
+      if (i + 1 < n)
+        a.set(i, i + 1, -1.);
+    a.compress(VectorOperation::insert);
+  }
+
+  // New values on the same pattern, as a Newton iteration's tangent has.
+  void set_diagonal(PETScWrappers::MPI::SparseMatrix &a, const IndexSet &owned, const double diagonal)
+  {
+    for (const auto i : owned)
+      a.set(i, i, diagonal);
+    a.compress(VectorOperation::insert);
+  }
 } // namespace
 
 TEST(DirectFactorization, SolvesWithTheMatrixAndItsTranspose)
 {
-  const unsigned int n = 40;
-  const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const unsigned int size = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-  IndexSet           owned(n); // rows cut in blocks over the ranks (the ctest runs 1 and 2)
-  owned.add_range(rank * n / size, (rank + 1) * n / size);
+  const unsigned int n     = 40;
+  const IndexSet     owned = owned_rows(n);
   PETScWrappers::MPI::SparseMatrix a;
   fill(a, owned, n);
   PETScWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b), y(b), residual(b);
@@ -72,22 +96,14 @@ TEST(DirectFactorization, SolvesWithTheMatrixAndItsTranspose)
 // factor kept stale would leave a residual of the order of the change (here 2 on the diagonal).
 TEST(DirectFactorization, RefactorsNewValuesOnTheKeptPattern)
 {
-  const unsigned int n = 40;
-  const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const unsigned int size = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-  IndexSet           owned(n);
-  owned.add_range(rank * n / size, (rank + 1) * n / size);
+  const unsigned int n     = 40;
+  const IndexSet     owned = owned_rows(n);
   for (const bool symmetric : {false, true})
     {
       PETScWrappers::MPI::SparseMatrix a;
       fill(a, owned, n);
-      if (symmetric) // 4 on the diagonal, -1 on both sides
-        {
-          for (const auto i : owned)
-            if (i + 1 < n)
-              a.set(i, i + 1, -1.);
-          a.compress(VectorOperation::insert);
-        }
+      if (symmetric)
+        make_symmetric(a, owned, n);
       PETScWrappers::MPI::Vector b(owned, MPI_COMM_WORLD), x(b), residual(b);
       for (const auto i : owned)
         b(i) = std::sin(1. + i);
@@ -96,9 +112,7 @@ TEST(DirectFactorization, RefactorsNewValuesOnTheKeptPattern)
       compliant::DirectFactorization factor;
       for (const double diagonal : {4., 6., 3.})
         {
-          for (const auto i : owned)
-            a.set(i, i, diagonal);
-          a.compress(VectorOperation::insert);
+          set_diagonal(a, owned, diagonal);
           factor.factor(a, symmetric, false, false);
           factor.solve(x, b);
           a.vmult(residual, x);
@@ -114,23 +128,15 @@ TEST(DirectFactorization, RefactorsNewValuesOnTheKeptPattern)
 // 2 cos(k pi / (n + 1)) > d.
 TEST(DirectFactorization, InertiaFollowsTheNewValues)
 {
-  const unsigned int n = 40;
-  const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const unsigned int size = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-  IndexSet           owned(n);
-  owned.add_range(rank * n / size, (rank + 1) * n / size);
+  const unsigned int n     = 40;
+  const IndexSet     owned = owned_rows(n);
   PETScWrappers::MPI::SparseMatrix a;
   fill(a, owned, n);
-  for (const auto i : owned)
-    if (i + 1 < n)
-      a.set(i, i + 1, -1.);
-  a.compress(VectorOperation::insert);
+  make_symmetric(a, owned, n);
   compliant::DirectFactorization factor;
   for (const double d : {4., 1.5, -0.3})
     {
-      for (const auto i : owned)
-        a.set(i, i, d);
-      a.compress(VectorOperation::insert);
+      set_diagonal(a, owned, d);
       factor.factor(a, true);
       unsigned int expected = 0;
       for (unsigned int k = 1; k <= n; ++k)

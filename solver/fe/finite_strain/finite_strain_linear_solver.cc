@@ -12,6 +12,7 @@
 
 #include "fast_solver/p_multigrid_solver.h"
 #include "linear_algebra/direct_factorization.h"
+#include "linear_algebra/petsc_linear_solver.h"
 #include "fast_solver/tangent_operator.h"
 
 #include <algorithm>
@@ -100,8 +101,7 @@ namespace compliant
     // Newton iterations, 2 ranks, OpenBLAS): a fresh LU each iteration took 19 ms, the kept LDL^T 11 ms.
     if (!newton_factorization)
       {
-        if (!parameters.petsc_options.empty() && PetscOptionsInsertString(nullptr, parameters.petsc_options.c_str()) != 0)
-          throw std::runtime_error("PETSc could not read 'Linear solver/PETSc options'");
+        insert_petsc_options(parameters.petsc_options);
         newton_factorization = std::make_shared<DirectFactorization>();
       }
     newton_factorization->factor(tangent, symmetric_tangent(), true, false);

@@ -57,9 +57,7 @@ namespace compliant
     MatNullSpace null_space =
       attach_near_null_space(matrix, matrix.get_mpi_communicator(), near_null_space, block_size);
     MatNullSpaceDestroy(&null_space); // the matrix keeps its own reference
-    if (!petsc_options.empty())
-      check(PetscOptionsInsertString(nullptr, petsc_options.c_str()),
-            "PetscOptionsInsertString (Linear solver/PETSc options)");
+    insert_petsc_options(petsc_options);
   }
 
   unsigned int solve_linear_system(dealii::PETScWrappers::MPI::SparseMatrix        &matrix,
@@ -91,9 +89,7 @@ namespace compliant
     check(KSPSetTolerances(ksp, settings.relative_tolerance, 1e-300, PETSC_DEFAULT,
                            settings.max_iterations),
           "KSPSetTolerances");
-    if (!settings.petsc_options.empty())
-      check(PetscOptionsInsertString(nullptr, settings.petsc_options.c_str()),
-            "PetscOptionsInsertString (Linear solver/PETSc options)");
+    insert_petsc_options(settings.petsc_options);
     check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
     Vec x = solution;
     check(KSPSolve(ksp, rhs, x), "KSPSolve");
@@ -117,6 +113,13 @@ namespace compliant
                                "solver/Method = direct' or more iterations");
     return iterations;
   }
+  void insert_petsc_options(const std::string &petsc_options)
+  {
+    if (!petsc_options.empty())
+      check(PetscOptionsInsertString(nullptr, petsc_options.c_str()),
+            "PetscOptionsInsertString (Linear solver/PETSc options)");
+  }
+
   unsigned int count_negative_eigenvalues(dealii::PETScWrappers::MPI::SparseMatrix &matrix)
   {
     DirectFactorization factorization;

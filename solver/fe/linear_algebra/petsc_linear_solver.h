@@ -41,6 +41,9 @@ namespace compliant
   void configure_gamg(PC pc, dealii::PETScWrappers::MPI::SparseMatrix &matrix,
                       std::vector<dealii::PETScWrappers::MPI::Vector> near_null_space,
                       unsigned int block_size, const std::string &petsc_options);
+  // 'Linear solver/PETSc options' into PETSc's (global) options database, for the solvers set
+  // up after it; nothing if empty. Throws std::runtime_error if PETSc cannot read them.
+  void insert_petsc_options(const std::string &petsc_options);
   // Number of negative eigenvalues of a symmetric matrix: the inertia of its LDL^T factor
   // (Sylvester's law), from MUMPS. Throws std::runtime_error if PETSc cannot give it.
   unsigned int count_negative_eigenvalues(dealii::PETScWrappers::MPI::SparseMatrix &matrix);
