@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 126 inputs.
-README_CENSUS = {"refused with exit 2": 115, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
+# The README's census of the corpus: 129 inputs.
+README_CENSUS = {"refused with exit 2": 118, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -433,6 +433,21 @@ solver_case("friction on an arc-length path",
              "Contact/Obstacles=pin: circle, center=25 10.634, radius=2, friction=0.3"],
             ["flexure_hinge_stop.prm", "Contact/Obstacles", "pin", "friction", "arc length"])
 solver_case("no supports (singular)", [cantilever_3d, S, "Boundary conditions/Clamped="], ["Boundary conditions", "constrained"])
+# Mechanisms: supports that hold some rigid motions but not all (a singular matrix that a direct
+# solver would turn into displacements of 1e11 without a word).
+solver_case("mechanism: one component held (3D linear)",
+            [cantilever_3d, S, "Boundary conditions/Clamped=", S, "Boundary conditions/Displacement=left: x=0"],
+            ["cantilever_3d.prm", "Boundary conditions", "3 rigid-body motions", "translation along y",
+             "translation along z", "rotation about x", "mechanism"])
+solver_case("mechanism: one component held (3D finite strain)",
+            [os.path.join(root, "cases", "benchmarks", "flexure_finite_strain.prm"), S, "Boundary conditions/Clamped=",
+             S, "Boundary conditions/Rotation=", S, "Boundary conditions/Displacement=left: x=0", S,
+             "Loads/Traction=right: 0 0 0.001"],
+            ["flexure_finite_strain.prm", "Boundary conditions", "translation along y", "rotation about x", "mechanism"])
+solver_case("mechanism: an edge held across only (2D)",
+            [os.path.join(root, "cases", "verification", "cantilever_2d.prm"), S, "Boundary conditions/Clamped=", S,
+             "Boundary conditions/Displacement=left: x=0"],
+            ["cantilever_2d.prm", "a rigid-body motion free", "translation along y", "mechanism"])
 solver_case("unwritable output directory", [hinge, S, "Output/Directory=/proc/compliant"], ["Output/Directory"])
 solver_case("one cell on more ranks than cells", [cantilever_3d, S, "Geometry/Parameters/nx=1",
             S, "Geometry/Parameters/ny=1", S, "Geometry/Parameters/nz=1", "--check"], ["is valid", "Mesh: 1 cells"], code=0, np=3)

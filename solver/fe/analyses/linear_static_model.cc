@@ -1,6 +1,7 @@
 #include "analyses/linear_static_model.h"
 
 #include "constraints/extra_constraints.h"
+#include "constraints/rigid_motion_check.h"
 #include "elasticity/global_constraints.h"
 
 #include <deal.II/base/timer.h>
@@ -55,6 +56,7 @@ namespace compliant
             extended = gather_constraints(problem, false);
             add_extra_constraints(problem, extra, extended);
           }
+        require_rigid_motion_held(problem, extra.empty() ? problem.constraints : extended, "a linear static solve");
       }
     catch (const std::invalid_argument &e)
       {

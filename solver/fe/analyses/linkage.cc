@@ -3,6 +3,7 @@
 #include <deal.II/base/timer.h>
 
 #include "constraints/extra_constraints.h"
+#include "constraints/rigid_motion_check.h"
 #include "elasticity/global_constraints.h"
 #include "elasticity/linear_elastic_problem.h"
 #include "output/field_output.h"
@@ -34,6 +35,7 @@ namespace compliant
           validate_quantity_requests(problem);
           constraints = gather_constraints(problem, false);
           add_extra_constraints(problem, read_extra_constraints(context.prm), constraints);
+          require_rigid_motion_held(problem, constraints, "the linkage's static solve");
         }
       catch (const std::invalid_argument &e)
         {

@@ -379,6 +379,8 @@ namespace compliant
             throw std::invalid_argument("Boundary conditions: nothing is clamped, displaced or rotated; "
                                         "a static solve needs the rigid-body motion constrained (a "
                                         "Rigid boundary moves with the body, it does not hold it)");
+          if (!problem->contact)
+            problem->require_rigid_motion_held("a static solve");
           validate_quantity_requests(*problem);
           if (settings.arc_length)
             problem->require_load_driven();

@@ -316,6 +316,15 @@ namespace compliant
   }
 
   template <int dim>
+  IndexSet RigidBoundary<dim>::dofs(const types::global_dof_index n_dofs) const
+  {
+    IndexSet set(n_dofs);
+    for (const auto &dof : boundary_dofs)
+      set.add_index(dof.index);
+    return set;
+  }
+
+  template <int dim>
   void RigidBoundary<dim>::add_constraints(AffineConstraints<double> &constraints,
                                            const bool                 for_sparsity) const
   {

@@ -52,6 +52,8 @@ namespace compliant
 
     // The DoFs the constraints may name as masters: rows a sparsity pattern must hold.
     dealii::IndexSet master_candidates(dealii::types::global_dof_index n_dofs) const;
+    // Every DoF of the boundary (from every rank): its lines hold no rigid motion of the part.
+    dealii::IndexSet dofs(dealii::types::global_dof_index n_dofs) const;
 
     // Couples every candidate to every DoF of the locally owned cells that hold a candidate: a
     // candidate that is a slave in some state (3 of them master, the others follow) condenses

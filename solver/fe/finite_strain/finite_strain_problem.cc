@@ -22,6 +22,7 @@
 #include "input/expression.h"
 #include "input/spec_list.h"
 #include "linear_algebra/petsc_linear_solver.h"
+#include "constraints/rigid_motion_check.h"
 #include "linear_algebra/rigid_body_modes.h"
 #include "mesh/mesh_reader.h"
 
@@ -128,6 +129,14 @@ namespace compliant
     const auto constraints = make_constraints(0, true, zero, true); // refuses supported rigid nodes
     reinit_matrix(tangent, dof_handler, constraints, rigid_boundaries, locally_owned_dofs, locally_relevant_dofs,
                   communicator);
+  }
+
+  template <int dim>
+  void FiniteStrainProblem<dim>::require_rigid_motion_held(const std::string &what) const
+  {
+    const PETScWrappers::MPI::Vector zero(locally_owned_dofs, locally_relevant_dofs, communicator);
+    compliant::require_rigid_motion_held(*mapping, dof_handler, make_constraints(0, true, zero), rigid_boundaries,
+                                         what);
   }
 
   template <int dim>

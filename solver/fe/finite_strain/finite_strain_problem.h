@@ -202,6 +202,10 @@ namespace compliant
     bool                               iterative_failed        = false;
     std::string                        iterative_failure; // why the iterative solver was left
 
+    // Throws std::invalid_argument naming the rigid motions the supports, ties and rigid
+    // boundaries leave free in the reference configuration (constraints/rigid_motion_check.h).
+    // Not for contact, which may hold the part once it touches. Collective.
+    void require_rigid_motion_held(const std::string &what) const;
 
   private:
     friend class FiniteStrainNewtonSystem<dim>;
