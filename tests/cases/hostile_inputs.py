@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 129 inputs.
-README_CENSUS = {"refused with exit 2": 118, "tool errors with exit 1": 6, "must work": 4, "rank failing alone": 1}
+# The README's census of the corpus: 131 inputs.
+README_CENSUS = {"refused with exit 2": 119, "tool errors with exit 1": 6, "must work": 5, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -444,6 +444,27 @@ solver_case("mechanism: one component held (3D finite strain)",
              S, "Boundary conditions/Rotation=", S, "Boundary conditions/Displacement=left: x=0", S,
              "Loads/Traction=right: 0 0 0.001"],
             ["flexure_finite_strain.prm", "Boundary conditions", "translation along y", "rotation about x", "mechanism"])
+# Two boxes meshed apart (gmsh's built-in kernel merges no nodes): the loaded one holds on to nothing.
+unglued = scratch_file("unglued.geo", "Geometry.AutoCoherence = 0;\n" + "\n".join(
+    ["Point(%d) = {%g, %g, %g};" % (4 * b + k + 1, 5 * b, y, z) for b in (0, 1)
+     for k, (y, z) in enumerate([(0, 0), (1, 0), (1, 1), (0, 1)])] +
+    ["Line(%d) = {%d, %d};" % (4 * b + k + 1, 4 * b + k + 1, 4 * b + (k + 1) % 4 + 1) for b in (0, 1) for k in range(4)] +
+    ["Curve Loop(%d) = {%d, %d, %d, %d}; Plane Surface(%d) = {%d};" % (b + 1, 4 * b + 1, 4 * b + 2, 4 * b + 3, 4 * b + 4, b + 1, b + 1)
+     for b in (0, 1)] +
+    ["Transfinite Curve{:} = 3; Transfinite Surface{1, 2}; Recombine Surface{1, 2};",
+     "a[] = Extrude {5, 0, 0} { Surface{1}; Layers{4}; Recombine; };",
+     "b[] = Extrude {5, 0, 0} { Surface{2}; Layers{4}; Recombine; };",
+     "Physical Surface(\"left\") = {1}; Physical Surface(\"right\") = {b[0]};",
+     "Physical Volume(\"body\") = {a[1], b[1]};"]) + "\n")
+solver_case("mechanism: a second body glued to nothing",
+            [scratch_file("unglued.prm", "set Model = 3d\nsubsection Geometry\n  set Mesh file = " + unglued +
+                          "\nend\nsubsection Material\n  set Materials = *: steel\nend\n"
+                          "subsection Boundary conditions\n  set Clamped = left\nend\n"
+                          "subsection Loads\n  set Traction = right: 0 -1 0\nend\n")],
+            ["unglued.prm", "6 rigid-body motions", "body 2 of 2", "held by nothing", "BooleanFragments"])
+solver_case("held without a clamp: some components on each of two faces",
+            [cantilever_3d, S, "Boundary conditions/Clamped=", S, "Boundary conditions/Displacement=left: x=0, y=0; right: z=0",
+             "--check"], ["is valid"], code=0)
 solver_case("mechanism: an edge held across only (2D)",
             [os.path.join(root, "cases", "verification", "cantilever_2d.prm"), S, "Boundary conditions/Clamped=", S,
              "Boundary conditions/Displacement=left: x=0"],

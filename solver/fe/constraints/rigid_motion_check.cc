@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <map>
 #include <set>
 #include <sstream>
@@ -24,14 +25,107 @@ namespace compliant
     {
       Point<3>     position;
       unsigned int component;
+      unsigned int body;
     };
+
+    // The separate bodies of the mesh (cells joined through shared vertices), with the centre and
+    // size of each; one body (the whole part) where this rank does not hold every cell.
+    struct Bodies
+    {
+      std::vector<unsigned int> of_cell; // by active cell index; empty: one body
+      std::vector<Point<3>>     centre;
+      std::vector<double>       size;
+      unsigned int              n() const { return centre.size(); }
+    };
+
+    // A free motion's eigenvalue of the Gram matrix is zero up to round-off; a held one is at least
+    // of the order of the held DoFs' squared lever arms over the body's size (1e-8: a pad 1e-4 of
+    // the size).
+    constexpr double free_threshold = 1e-8;
+
+    // Beyond this, the bodies' motions are tested together (the Gram matrix has 6 rows per body).
+    constexpr unsigned int max_bodies = 100;
+
+    // Union-find over the vertices of every cell: bodies numbered by their first cell, so alike on
+    // every rank.
+    template <int dim>
+    std::vector<unsigned int> label_bodies(const Triangulation<dim> &mesh, unsigned int &n_bodies)
+    {
+      std::vector<unsigned int> parent(mesh.n_vertices());
+      std::iota(parent.begin(), parent.end(), 0u);
+      const auto root = [&](unsigned int v) {
+        while (parent[v] != v)
+          v = parent[v] = parent[parent[v]];
+        return v;
+      };
+      for (const auto &cell : mesh.active_cell_iterators())
+        for (const auto v : cell->vertex_indices())
+          parent[root(cell->vertex_index(v))] = root(cell->vertex_index(0));
+      std::map<unsigned int, unsigned int> number;
+      std::vector<unsigned int>            of_cell(mesh.n_active_cells());
+      for (const auto &cell : mesh.active_cell_iterators())
+        of_cell[cell->active_cell_index()] =
+          number.emplace(root(cell->vertex_index(0)), number.size()).first->second;
+      n_bodies = number.size();
+      return of_cell;
+    }
+
+    template <int dim>
+    Bodies find_bodies(const Triangulation<dim> &mesh, MPI_Comm comm)
+    {
+      bool whole = true;
+      for (const auto &cell : mesh.active_cell_iterators())
+        whole = whole && !cell->is_artificial();
+      whole = Utilities::MPI::min(whole ? 1 : 0, comm) == 1;
+      Bodies       bodies;
+      unsigned int n = 1;
+      if (whole)
+        bodies.of_cell = label_bodies(mesh, n);
+      if (n > max_bodies)
+        bodies.of_cell.clear(), n = 1;
+      // Centres and sizes from the vertices: of every cell where each rank has them all.
+      const auto body_of = [&](const auto &cell) {
+        return bodies.of_cell.empty() ? 0u : bodies.of_cell[cell->active_cell_index()];
+      };
+      const auto counted = [&](const auto &cell) { return whole ? true : cell->is_locally_owned(); };
+      std::vector<double> sums(4 * n, 0.);
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (counted(cell))
+          for (const auto v : cell->vertex_indices())
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                sums[4 * body_of(cell) + d] += cell->vertex(v)[d];
+              sums[4 * body_of(cell) + 3] += 1;
+            }
+      if (!whole)
+        for (auto &x : sums)
+          x = Utilities::MPI::sum(x, comm);
+      bodies.centre.resize(n);
+      bodies.size.assign(n, 0.);
+      for (unsigned int b = 0; b < n; ++b)
+        for (unsigned int d = 0; d < dim; ++d)
+          bodies.centre[b][d] = sums[4 * b + d] / std::max(sums[4 * b + 3], 1.);
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (counted(cell))
+          for (const auto v : cell->vertex_indices())
+            {
+              Point<3> p;
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] = cell->vertex(v)[d];
+              auto &size = bodies.size[body_of(cell)];
+              size       = std::max(size, p.distance(bodies.centre[body_of(cell)]));
+            }
+      for (auto &size : bodies.size)
+        size = std::max(whole ? size : Utilities::MPI::max(size, comm), std::numeric_limits<double>::min());
+      return bodies;
+    }
 
     // Positions of the displacement DoFs in `wanted`, from the cells this rank holds: locally
     // owned first, the others (ghost, or all of a shared mesh) only for DoFs still missing.
     template <int dim>
     std::map<types::global_dof_index, PlacedDof>
     place_dofs(const Mapping<dim> &mapping, const DoFHandler<dim> &dof_handler,
-               const std::set<types::global_dof_index> &wanted)
+               const std::set<types::global_dof_index> &wanted, const Bodies &bodies)
     {
       const FiniteElement<dim> &fe   = dof_handler.get_fe();
       const unsigned int        base = fe.component_to_base_index(0).first;
@@ -57,7 +151,8 @@ namespace compliant
                 const unsigned int component              = fe.system_to_component_index(i).first;
                 if (component >= dim || base_and_copy.first != base || wanted.count(indices[i]) == 0)
                   continue;
-                PlacedDof dof{Point<3>(), component};
+                PlacedDof dof{Point<3>(), component,
+                              bodies.of_cell.empty() ? 0u : bodies.of_cell[cell->active_cell_index()]};
                 for (unsigned int d = 0; d < dim; ++d)
                   dof.position[d] = values.quadrature_point(index_in_base)[d];
                 placed.emplace(indices[i], dof);
@@ -66,14 +161,14 @@ namespace compliant
       return placed;
     }
 
-    // Rigid motion m at a DoF: translations first, then rotations about the centre with unit
-    // amplitude at distance `size` (so both kinds weigh alike).
+    // Rigid motion m of the DoF's body at the DoF: translations first, then rotations about the
+    // body's centre with unit amplitude at distance `size` (so both kinds weigh alike).
     template <int dim>
-    double mode_value(unsigned int m, const PlacedDof &dof, const Point<3> &centre, double size)
+    double mode_value(unsigned int m, const PlacedDof &dof, const Bodies &bodies)
     {
       if (m < dim)
         return m == dof.component ? 1. : 0.;
-      const Tensor<1, 3> r     = (dof.position - centre) / size;
+      const Tensor<1, 3> r     = (dof.position - bodies.centre[dof.body]) / bodies.size[dof.body];
       Tensor<1, 3>       axis;
       axis[dim == 2 ? 2 : m - dim] = 1;
       return cross_product_3d(axis, r)[dof.component];
@@ -106,9 +201,7 @@ namespace compliant
                                                double size)
     {
       constexpr unsigned int n_modes = dim == 2 ? 3 : 6;
-      // Exact zero for a free motion, up to round-off; a held one is at least of the order of the
-      // held DoFs' squared lever arms over the part's size (1e-8: a pad 1e-4 of the size).
-      const double threshold = 1e-8;
+      const double threshold = free_threshold;
       LAPACKFullMatrix<double> translations(dim, dim), all(n_modes, n_modes);
       for (unsigned int i = 0; i < n_modes; ++i)
         for (unsigned int j = 0; j < n_modes; ++j)
@@ -162,13 +255,56 @@ namespace compliant
         }
       return names;
     }
+    // Each body's own free motions (the others held still), named; then the number of free
+    // motions that move several bodies together (bodies tied to each other but to nothing else).
+    template <int dim>
+    void name_free_motions_of_bodies(const FullMatrix<double> &gram, const Bodies &bodies,
+                                     FreeRigidMotions &result)
+    {
+      constexpr unsigned int n_modes = dim == 2 ? 3 : 6;
+      const unsigned int     n       = gram.m();
+      LAPACKFullMatrix<double> all(n, n);
+      all = gram;
+      Vector<double>     eigenvalues;
+      FullMatrix<double> vectors;
+      all.compute_eigenvalues_symmetric(-1, free_threshold, 0, eigenvalues, vectors);
+      result.count    = eigenvalues.size();
+      result.n_bodies = bodies.n();
+      if (result.count == 0)
+        return;
+      unsigned int single = 0; // free motions of one body alone
+      for (unsigned int b = 0; b < bodies.n(); ++b)
+        {
+          FullMatrix<double> block(n_modes, n_modes);
+          for (unsigned int i = 0; i < n_modes; ++i)
+            for (unsigned int j = 0; j < n_modes; ++j)
+              block(i, j) = gram(n_modes * b + i, n_modes * b + j);
+          const auto names = name_free_motions<dim>(block, bodies.centre[b], bodies.size[b]);
+          if (bodies.n() == 1)
+            result.motions = names;
+          else if (!names.empty())
+            {
+              std::string text = "body " + std::to_string(b + 1) + " of " + std::to_string(bodies.n()) +
+                                 " (centre " + format_vector(bodies.centre[b], dim) + "): ";
+              if (names.size() == n_modes)
+                text += "held by nothing";
+              else
+                for (unsigned int k = 0; k < names.size(); ++k)
+                  text += (k ? ", " : "") + names[k];
+              result.motions.push_back(text);
+            }
+          single += names.size();
+        }
+      if (single < result.count)
+        result.motions.push_back(std::to_string(result.count - single) + " motion(s) of several bodies together");
+    }
   } // namespace
 
   std::string FreeRigidMotions::describe() const
   {
     std::string text;
     for (unsigned int i = 0; i < motions.size(); ++i)
-      text += (i == 0 ? "" : i + 1 == motions.size() ? " and " : ", ") + motions[i];
+      text += (i == 0 ? "" : n_bodies > 1 ? "; " : i + 1 == motions.size() ? " and " : ", ") + motions[i];
     return text;
   }
 
@@ -192,37 +328,14 @@ namespace compliant
           for (const auto &entry : line.entries)
             wanted.insert(entry.first);
         }
-    const auto placed = place_dofs(mapping, dof_handler, wanted);
+    const Bodies bodies = find_bodies(dof_handler.get_triangulation(), comm);
+    const auto   placed = place_dofs(mapping, dof_handler, wanted, bodies);
 
-    // The centre and size of the part, from the vertices of the locally owned cells.
-    Tensor<1, 4> sums;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto v : cell->vertex_indices())
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              sums[d] += cell->vertex(v)[d];
-            sums[3] += 1;
-          }
-    sums = Utilities::MPI::sum(sums, comm);
-    Point<3> centre;
-    for (unsigned int d = 0; d < dim; ++d)
-      centre[d] = sums[d] / std::max(sums[3], 1.);
-    double size = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto v : cell->vertex_indices())
-          {
-            Point<3> p;
-            for (unsigned int d = 0; d < dim; ++d)
-              p[d] = cell->vertex(v)[d];
-            size = std::max(size, p.distance(centre));
-          }
-    size = std::max(Utilities::MPI::max(size, comm), std::numeric_limits<double>::min());
-
-    // Gram matrix of each motion's violation of the lines: u_i - sum_j a_ij u_j.
-    FullMatrix<double> gram(n_modes, n_modes);
-    int                undecided = 0;
+    // Gram matrix of each motion's violation of the lines, u_i - sum_j a_ij u_j, over the
+    // motions of every body (n_modes rows each).
+    FullMatrix<double>  gram(n_modes * bodies.n(), n_modes * bodies.n());
+    std::vector<double> violation(n_modes * bodies.n());
+    int                 undecided = 0;
     for (const auto &line : constraints.get_lines())
       {
         if (!checked(line.index))
@@ -230,9 +343,10 @@ namespace compliant
         const auto dof = placed.find(line.index);
         if (dof == placed.end())
           continue; // a pressure DoF
-        double violation[n_modes];
+        std::set<unsigned int> touched{dof->second.body};
+        std::fill(violation.begin(), violation.end(), 0.);
         for (unsigned int m = 0; m < n_modes; ++m)
-          violation[m] = mode_value<dim>(m, dof->second, centre, size);
+          violation[n_modes * dof->second.body + m] = mode_value<dim>(m, dof->second, bodies);
         for (const auto &[index, weight] : line.entries)
           {
             const auto master = placed.find(index);
@@ -241,18 +355,21 @@ namespace compliant
                 undecided = 1;
                 break;
               }
+            touched.insert(master->second.body);
             for (unsigned int m = 0; m < n_modes; ++m)
-              violation[m] -= weight * mode_value<dim>(m, master->second, centre, size);
+              violation[n_modes * master->second.body + m] -= weight * mode_value<dim>(m, master->second, bodies);
           }
-        for (unsigned int i = 0; i < n_modes; ++i)
-          for (unsigned int j = 0; j < n_modes; ++j)
-            gram(i, j) += violation[i] * violation[j];
+        for (const unsigned int a : touched)
+          for (const unsigned int b : touched)
+            for (unsigned int i = n_modes * a; i < n_modes * (a + 1); ++i)
+              for (unsigned int j = n_modes * b; j < n_modes * (b + 1); ++j)
+                gram(i, j) += violation[i] * violation[j];
       }
     FreeRigidMotions result;
     result.decided = Utilities::MPI::max(undecided, comm) == 0;
     Utilities::MPI::sum(gram, comm, gram);
     if (result.decided)
-      result.motions = name_free_motions<dim>(gram, centre, size);
+      name_free_motions_of_bodies<dim>(gram, bodies, result);
     return result;
   }
 
@@ -269,11 +386,14 @@ namespace compliant
       return;
     throw std::invalid_argument(
       "Boundary conditions: the supports leave " +
-      (free.motions.size() == 1 ? std::string("a rigid-body motion") :
-                                  std::to_string(free.motions.size()) + " rigid-body motions") +
+      (free.count == 1 ? std::string("a rigid-body motion") : std::to_string(free.count) + " rigid-body motions") +
       " free (" + free.describe() + "): the part is a mechanism and " + what +
       " has no unique answer; hold those motions too (Clamped, more components in Displacement, or a "
-      "support on another boundary)");
+      "support on another boundary)" +
+      (free.n_bodies > 1 ? ". The mesh is " + std::to_string(free.n_bodies) +
+                             " bodies that share no nodes: glue volumes meant to be one part (gmsh "
+                             "BooleanFragments or Coherence), or tie or support each body" :
+                           std::string()));
   }
 
   template FreeRigidMotions free_rigid_motions<2>(const Mapping<2> &, const DoFHandler<2> &,

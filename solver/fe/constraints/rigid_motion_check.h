@@ -4,10 +4,11 @@
 // without complaint, and an iterative one fails after its last iteration. This check finds the
 // free motions before any solve and names them.
 //
-// It tests the rigid motions of the whole mesh against every constraint line of a locally owned
-// DoF (supports, edge supports, mirror ties, rigid boundaries, hanging nodes). A second body that
-// nothing ties to the first is not seen; contact, which may hold the part once it touches, is the
-// caller's to exclude.
+// It tests the rigid motions of each body of the mesh (cells joined through shared vertices: a
+// volume gmsh did not glue to its neighbour is a body of its own) against every constraint line
+// of a locally owned DoF (supports, edge supports, mirror ties, pins, rigid boundaries, hanging
+// nodes). On a distributed mesh, and beyond 100 bodies, the whole mesh is tested as one body.
+// Contact, which may hold the part once it touches, is the caller's to exclude.
 #pragma once
 
 #include <deal.II/base/index_set.h>
@@ -27,9 +28,11 @@ namespace compliant
     // False when some line names a DoF this rank cannot place (a tie to a far node): the check
     // then says nothing rather than risk a false alarm.
     bool                     decided = true;
+    unsigned int             count    = 0; // free motions: the dimension of their space
+    unsigned int             n_bodies = 1; // separate bodies of the mesh
     std::vector<std::string> motions; // 'translation along y', 'rotation about x through (0, 2.5, 0)'
 
-    bool any() const { return decided && !motions.empty(); }
+    bool any() const { return decided && count > 0; }
     // 'translation along y, translation along z and rotation about x through (...)'
     std::string describe() const;
   };
