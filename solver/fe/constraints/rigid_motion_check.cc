@@ -49,7 +49,8 @@ namespace compliant
     // Union-find over the vertices of every cell: bodies numbered by their first cell, so alike on
     // every rank.
     template <int dim>
-    std::vector<unsigned int> label_bodies(const Triangulation<dim> &mesh, unsigned int &n_bodies)
+    std::vector<unsigned int> label_bodies(const Triangulation<dim> &mesh, const std::vector<int> &joining,
+                                           unsigned int &n_bodies)
     {
       std::vector<unsigned int> parent(mesh.n_vertices());
       std::iota(parent.begin(), parent.end(), 0u);
@@ -61,6 +62,20 @@ namespace compliant
       for (const auto &cell : mesh.active_cell_iterators())
         for (const auto v : cell->vertex_indices())
           parent[root(cell->vertex_index(v))] = root(cell->vertex_index(0));
+      // A rigid boundary makes every body it touches one rigid piece.
+      for (const int id : joining)
+        {
+          int first = -1;
+          for (const auto &cell : mesh.active_cell_iterators())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() && static_cast<int>(cell->face(f)->boundary_id()) == id)
+                {
+                  const unsigned int v = cell->face(f)->vertex_index(0);
+                  if (first < 0)
+                    first = static_cast<int>(v);
+                  parent[root(v)] = root(static_cast<unsigned int>(first));
+                }
+        }
       std::map<unsigned int, unsigned int> number;
       std::vector<unsigned int>            of_cell(mesh.n_active_cells());
       for (const auto &cell : mesh.active_cell_iterators())
@@ -71,7 +86,7 @@ namespace compliant
     }
 
     template <int dim>
-    Bodies find_bodies(const Triangulation<dim> &mesh, MPI_Comm comm)
+    Bodies find_bodies(const Triangulation<dim> &mesh, const std::vector<int> &joining, MPI_Comm comm)
     {
       bool whole = true;
       for (const auto &cell : mesh.active_cell_iterators())
@@ -80,7 +95,7 @@ namespace compliant
       Bodies       bodies;
       unsigned int n = 1;
       if (whole)
-        bodies.of_cell = label_bodies(mesh, n);
+        bodies.of_cell = label_bodies(mesh, joining, n);
       if (n > max_bodies)
         bodies.of_cell.clear(), n = 1;
       // Centres and sizes from the vertices: of every cell where each rank has them all.
@@ -311,7 +326,8 @@ namespace compliant
   template <int dim>
   FreeRigidMotions free_rigid_motions(const Mapping<dim> &mapping, const DoFHandler<dim> &dof_handler,
                                       const AffineConstraints<double> &constraints,
-                                      const IndexSet                  &follow_rigid_motions)
+                                      const IndexSet                  &follow_rigid_motions,
+                                      const std::vector<int>          &joining_boundaries)
   {
     constexpr unsigned int n_modes = dim == 2 ? 3 : 6;
     const MPI_Comm         comm    = dof_handler.get_communicator();
@@ -328,7 +344,7 @@ namespace compliant
           for (const auto &entry : line.entries)
             wanted.insert(entry.first);
         }
-    const Bodies bodies = find_bodies(dof_handler.get_triangulation(), comm);
+    const Bodies bodies = find_bodies(dof_handler.get_triangulation(), joining_boundaries, comm);
     const auto   placed = place_dofs(mapping, dof_handler, wanted, bodies);
 
     // Gram matrix of each motion's violation of the lines, u_i - sum_j a_ij u_j, over the
@@ -378,10 +394,14 @@ namespace compliant
                                  const AffineConstraints<double> &constraints,
                                  const std::vector<RigidBoundary<dim>> &rigid_boundaries, const std::string &what)
   {
-    IndexSet rigid_dofs(dof_handler.n_dofs());
+    IndexSet         rigid_dofs(dof_handler.n_dofs());
+    std::vector<int> rigid_ids;
     for (const auto &rigid : rigid_boundaries)
-      rigid_dofs.add_indices(rigid.dofs(dof_handler.n_dofs()));
-    const FreeRigidMotions free = free_rigid_motions(mapping, dof_handler, constraints, rigid_dofs);
+      {
+        rigid_dofs.add_indices(rigid.dofs(dof_handler.n_dofs()));
+        rigid_ids.push_back(rigid.load.boundary_id);
+      }
+    const FreeRigidMotions free = free_rigid_motions(mapping, dof_handler, constraints, rigid_dofs, rigid_ids);
     if (!free.any())
       return;
     throw std::invalid_argument(
@@ -397,9 +417,11 @@ namespace compliant
   }
 
   template FreeRigidMotions free_rigid_motions<2>(const Mapping<2> &, const DoFHandler<2> &,
-                                                  const AffineConstraints<double> &, const IndexSet &);
+                                                  const AffineConstraints<double> &, const IndexSet &,
+                                                  const std::vector<int> &);
   template FreeRigidMotions free_rigid_motions<3>(const Mapping<3> &, const DoFHandler<3> &,
-                                                  const AffineConstraints<double> &, const IndexSet &);
+                                                  const AffineConstraints<double> &, const IndexSet &,
+                                                  const std::vector<int> &);
   template void require_rigid_motion_held<2>(const Mapping<2> &, const DoFHandler<2> &, const AffineConstraints<double> &,
                                              const std::vector<RigidBoundary<2>> &, const std::string &);
   template void require_rigid_motion_held<3>(const Mapping<3> &, const DoFHandler<3> &, const AffineConstraints<double> &,

@@ -39,13 +39,15 @@ namespace compliant
 
   // The displacement components are the first dim of the element's (a mixed element's pressure is
   // not looked at). The lines of DoFs in `follow_rigid_motions` are left out: they hold no rigid
-  // motion by construction (a rigid boundary's DoFs, whose masters may be on another rank).
+  // motion by construction (a rigid boundary's DoFs, whose masters may be on another rank); the
+  // bodies the `joining_boundaries` (rigid boundaries' ids) touch are one rigid piece.
   // Collective over the DoF handler's communicator.
   template <int dim>
   FreeRigidMotions free_rigid_motions(const dealii::Mapping<dim>              &mapping,
                                       const dealii::DoFHandler<dim>           &dof_handler,
                                       const dealii::AffineConstraints<double> &constraints,
-                                      const dealii::IndexSet                  &follow_rigid_motions);
+                                      const dealii::IndexSet                  &follow_rigid_motions,
+                                      const std::vector<int>                  &joining_boundaries);
 
   // Throws std::invalid_argument naming the free motions if the constraints leave any ('what':
   // 'a linear static solve'). The rigid boundaries' lines are left out (see above).
