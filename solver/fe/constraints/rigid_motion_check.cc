@@ -6,11 +6,12 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
-#include <numeric>
 #include <map>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -38,10 +39,10 @@ namespace compliant
       unsigned int              n() const { return centre.size(); }
     };
 
-    // A free motion's eigenvalue of the Gram matrix is zero up to round-off; a held one is at least
-    // of the order of the held DoFs' squared lever arms over the body's size (1e-8: a pad 1e-4 of
-    // the size).
-    constexpr double free_threshold = 1e-8;
+    // A free motion's eigenvalue of the Gram matrix is zero up to round-off (a few eps times its
+    // trace); a held one is about the sum of the held DoFs' squared lever arms over the body's size
+    // squared, so 1e-12 of the trace lets a pad of 1e-6 of the size hold a part of 1e6 DoFs.
+    constexpr double free_fraction_of_trace = 1e-12;
 
     // Beyond this, the bodies' motions are tested together (the Gram matrix has 6 rows per body).
     constexpr unsigned int max_bodies = 100;
@@ -97,7 +98,10 @@ namespace compliant
       if (whole)
         bodies.of_cell = label_bodies(mesh, joining, n);
       if (n > max_bodies)
-        bodies.of_cell.clear(), n = 1;
+        {
+          bodies.of_cell.clear();
+          n = 1;
+        }
       // Centres and sizes from the vertices: of every cell where each rank has them all.
       const auto body_of = [&](const auto &cell) {
         return bodies.of_cell.empty() ? 0u : bodies.of_cell[cell->active_cell_index()];
@@ -151,6 +155,8 @@ namespace compliant
       for (const bool owned_pass : {true, false})
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
+            if (placed.size() == wanted.size())
+              return placed; // the second pass, over other ranks' cells, only for what is missing
             if (cell->is_artificial() || cell->is_locally_owned() != owned_pass)
               continue;
             cell->get_dof_indices(indices);
@@ -189,12 +195,13 @@ namespace compliant
       return cross_product_3d(axis, r)[dof.component];
     }
 
-    std::string format_vector(const Tensor<1, 3> &v, unsigned int n)
+    // Components below 1e-9 of `scale` (a body's size: round-off off an axis) print as 0.
+    std::string format_vector(const Tensor<1, 3> &v, unsigned int n, double scale = 0)
     {
       std::ostringstream s;
       s << std::setprecision(4) << '(';
       for (unsigned int d = 0; d < n; ++d)
-        s << (d ? ", " : "") << (std::abs(v[d]) < 1e-12 ? 0. : v[d]);
+        s << (d ? ", " : "") << (std::abs(v[d]) < 1e-9 * std::max(scale, v.norm()) ? 0. : v[d]);
       s << ')';
       return s.str();
     }
@@ -213,10 +220,9 @@ namespace compliant
     // named first, then each remaining motion as a rotation about its axis.
     template <int dim>
     std::vector<std::string> name_free_motions(const FullMatrix<double> &gram, const Point<3> &centre,
-                                               double size)
+                                               double size, double threshold)
     {
       constexpr unsigned int n_modes = dim == 2 ? 3 : 6;
-      const double threshold = free_threshold;
       LAPACKFullMatrix<double> translations(dim, dim), all(n_modes, n_modes);
       for (unsigned int i = 0; i < n_modes; ++i)
         for (unsigned int j = 0; j < n_modes; ++j)
@@ -262,11 +268,13 @@ namespace compliant
             t[d] = motion[d];
           for (unsigned int a = 0; a < (dim == 2 ? 1u : 3u); ++a)
             omega[dim == 2 ? 2 : a] = motion[dim + a] / size;
+          if (omega.norm() * size < 1e-6)
+            continue; // a translation the translation block alone did not see as free
           // u = t + omega x (x - centre): the axis passes through centre + omega x t / |omega|^2.
           const Point<3> on_axis = centre + cross_product_3d(omega, t) / omega.norm_square();
-          names.push_back(dim == 2 ? "rotation about " + format_vector(on_axis, 2) :
+          names.push_back(dim == 2 ? "rotation about " + format_vector(on_axis, 2, size + centre.norm()) :
                                      "rotation about " + format_direction(omega, 3) + " through " +
-                                       format_vector(on_axis, 3));
+                                       format_vector(on_axis, 3, size + centre.norm()));
         }
       return names;
     }
@@ -282,7 +290,11 @@ namespace compliant
       all = gram;
       Vector<double>     eigenvalues;
       FullMatrix<double> vectors;
-      all.compute_eigenvalues_symmetric(-1, free_threshold, 0, eigenvalues, vectors);
+      double trace = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        trace += gram(i, i);
+      const double threshold = std::max(free_fraction_of_trace * trace, std::numeric_limits<double>::min());
+      all.compute_eigenvalues_symmetric(-1, threshold, 0, eigenvalues, vectors);
       result.count    = eigenvalues.size();
       result.n_bodies = bodies.n();
       if (result.count == 0)
@@ -294,7 +306,7 @@ namespace compliant
           for (unsigned int i = 0; i < n_modes; ++i)
             for (unsigned int j = 0; j < n_modes; ++j)
               block(i, j) = gram(n_modes * b + i, n_modes * b + j);
-          const auto names = name_free_motions<dim>(block, bodies.centre[b], bodies.size[b]);
+          const auto names = name_free_motions<dim>(block, bodies.centre[b], bodies.size[b], threshold);
           if (bodies.n() == 1)
             result.motions = names;
           else if (!names.empty())
@@ -333,12 +345,11 @@ namespace compliant
     const MPI_Comm         comm    = dof_handler.get_communicator();
     const IndexSet        &owned   = dof_handler.locally_owned_dofs();
 
+    // Every owned line, its DoF and its masters. A rigid boundary's own lines hold no motion of the
+    // piece it joins; only where one names a master this rank cannot place is it left out.
     std::set<types::global_dof_index> wanted;
-    const auto checked = [&](const types::global_dof_index i) {
-      return owned.is_element(i) && !follow_rigid_motions.is_element(i);
-    };
     for (const auto &line : constraints.get_lines())
-      if (checked(line.index))
+      if (owned.is_element(line.index))
         {
           wanted.insert(line.index);
           for (const auto &entry : line.entries)
@@ -349,31 +360,35 @@ namespace compliant
 
     // Gram matrix of each motion's violation of the lines, u_i - sum_j a_ij u_j, over the
     // motions of every body (n_modes rows each).
-    FullMatrix<double>  gram(n_modes * bodies.n(), n_modes * bodies.n());
-    std::vector<double> violation(n_modes * bodies.n());
-    int                 undecided = 0;
+    FullMatrix<double>        gram(n_modes * bodies.n(), n_modes * bodies.n());
+    std::vector<double>       violation(n_modes * bodies.n());
+    std::vector<unsigned int> touched; // bodies the line names
+    int                       undecided = 0;
     for (const auto &line : constraints.get_lines())
       {
-        if (!checked(line.index))
-          continue;
         const auto dof = placed.find(line.index);
-        if (dof == placed.end())
+        if (!owned.is_element(line.index) || dof == placed.end())
           continue; // a pressure DoF
-        std::set<unsigned int> touched{dof->second.body};
-        std::fill(violation.begin(), violation.end(), 0.);
+        bool complete = true;
+        for (const auto &entry : line.entries)
+          complete = complete && placed.count(entry.first) > 0;
+        if (!complete)
+          {
+            undecided = undecided || !follow_rigid_motions.is_element(line.index);
+            continue;
+          }
+        for (const unsigned int b : touched)
+          std::fill(violation.begin() + n_modes * b, violation.begin() + n_modes * (b + 1), 0.);
+        touched.assign(1, dof->second.body);
         for (unsigned int m = 0; m < n_modes; ++m)
           violation[n_modes * dof->second.body + m] = mode_value<dim>(m, dof->second, bodies);
         for (const auto &[index, weight] : line.entries)
           {
-            const auto master = placed.find(index);
-            if (master == placed.end())
-              {
-                undecided = 1;
-                break;
-              }
-            touched.insert(master->second.body);
+            const PlacedDof &master = placed.at(index);
+            if (std::find(touched.begin(), touched.end(), master.body) == touched.end())
+              touched.push_back(master.body);
             for (unsigned int m = 0; m < n_modes; ++m)
-              violation[n_modes * master->second.body + m] -= weight * mode_value<dim>(m, master->second, bodies);
+              violation[n_modes * master.body + m] -= weight * mode_value<dim>(m, master, bodies);
           }
         for (const unsigned int a : touched)
           for (const unsigned int b : touched)

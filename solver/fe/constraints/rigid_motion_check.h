@@ -38,9 +38,9 @@ namespace compliant
   };
 
   // The displacement components are the first dim of the element's (a mixed element's pressure is
-  // not looked at). The lines of DoFs in `follow_rigid_motions` are left out: they hold no rigid
-  // motion by construction (a rigid boundary's DoFs, whose masters may be on another rank); the
-  // bodies the `joining_boundaries` (rigid boundaries' ids) touch are one rigid piece.
+  // not looked at). The bodies the `joining_boundaries` (rigid boundaries' ids) touch are one
+  // rigid piece; a line of a DoF in `follow_rigid_motions` (a rigid boundary's) that names a
+  // master this rank cannot place is left out, which is exact for the rigid boundary's own lines.
   // Collective over the DoF handler's communicator.
   template <int dim>
   FreeRigidMotions free_rigid_motions(const dealii::Mapping<dim>              &mapping,
