@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks of rigid boundaries (Boundary conditions/Rigid) that need more than one run.
 
-    rigid_boundary_checks.py linear_3d | small_load | ranks
+    rigid_boundary_checks.py linear_3d | small_load | ranks | stiff_units
 
 The README's figures (Case files, rigid boundaries), asserted as stated (issue 34): pure bending in
 3D, theta and v to 4e-11 (measured 2.5e-11, 2.0e-11, 3.7e-11; bar 7e-11, 3 units of the figure's
@@ -90,6 +90,25 @@ elif mode == "ranks":
         print("%-24s %s" % (key, " ".join("%.12g" % v for v in values)))
         spread = max(abs(v - values[0]) for v in values) / abs(values[0])
         check(spread <= 1e-12, "%s the same on 1, 2, 3 ranks to 1e-12 (README; %.1e)" % (key, spread))
+elif mode == "stiff_units":
+    # Steel in SI units (E = 2.1e11 Pa) on the 10 m bar under 1 N: displacements 1e-9 of its size.
+    # A rigid boundary's displacements are differences of positions, round-off of eps times the
+    # size, so the residual cannot fall below ~1e-4 of the force scale there: Newton stalled at
+    # every load factor until a correction at that round-off counted as converged. The finite-strain
+    # answer must then be the linear one to that round-off: eps x 10 m in a displacement (1e-7 of
+    # 2e-8), over the 0.5 m between the nodes the rotation is read from in a rotation (4.4e-15, 1.5e-6
+    # of 3e-9; measured 6.8e-7). Bar: 1e-6 relative plus 5 x 4.4e-15, on 2 ranks.
+    sets = [s for s in bar_sets if not s.startswith("Material/")] + [
+        "Material/Materials=*: steel", "Material/Unit system=SI", "Boundary conditions/Rigid=right: force=0 1 0.5"]
+    linear = run_case(bar, sets, np=2)["quantities"]
+    nonlinear = run_case(bar, sets + ["Analysis=nonlinear static"], np=2)["quantities"]
+    for key in ("rigid_displacement_right_y", "rigid_displacement_right_z", "rigid_rotation_right_z",
+                "reaction_force_left_y"):
+        a, b = linear[key], nonlinear[key]
+        print("%-28s linear %.10g  nonlinear %.10g" % (key, a, b))
+        check(abs(a - b) <= 1e-6 * abs(a) + 2.2e-14,
+              "%s: finite strain = linear to 1e-6 + 2.2e-14 (%.1e relative)" % (key, abs(a - b) / abs(a)))
+    check(nonlinear["step_cutbacks"] == 0, "no step cut back (%d)" % nonlinear["step_cutbacks"])
 else:
     sys.exit("unknown mode " + mode)
 

@@ -118,6 +118,7 @@ namespace compliant
     }
     void   add(Vector &y, const double a, const Vector &x) const override { y.add(a, x); }
     double dot(const Vector &a, const Vector &b) const override { return a * b; }
+    double correction_floor() const override { return p.correction_round_off(); }
     bool   stop_requested() override { return p.stop_requested && p.stop_requested(); }
 
   private:

@@ -162,6 +162,8 @@ namespace compliant
 
     double norm(const Vector &v) const override { return v.l2_norm(); }
 
+    double correction_floor() const override { return p.correction_round_off(); }
+
     bool stop_requested() override { return p.stop_requested && p.stop_requested(); }
 
     void set_forcing(const double eta) override { p.linear_forcing = eta; }

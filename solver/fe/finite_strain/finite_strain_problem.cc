@@ -27,6 +27,7 @@
 #include "mesh/mesh_reader.h"
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <cmath>
 #include <cstdlib>
@@ -137,6 +138,21 @@ namespace compliant
     const PETScWrappers::MPI::Vector zero(locally_owned_dofs, locally_relevant_dofs, communicator);
     compliant::require_rigid_motion_held(*mapping, dof_handler, make_constraints(0, true, zero), rigid_boundaries,
                                          what);
+  }
+
+  template <int dim>
+  double FiniteStrainProblem<dim>::correction_round_off() const
+  {
+    if (rigid_boundaries.empty())
+      return 0;
+    if (largest_coordinate < 0)
+      {
+        double largest = 0;
+        for (const auto &vertex : triangulation.get_vertices())
+          largest = std::max(largest, vertex.norm());
+        largest_coordinate = Utilities::MPI::max(largest, communicator); // one verdict on every rank
+      }
+    return 8 * std::numeric_limits<double>::epsilon() * largest_coordinate * std::sqrt(double(dof_handler.n_dofs()));
   }
 
   template <int dim>

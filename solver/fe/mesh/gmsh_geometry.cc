@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -327,6 +328,39 @@ namespace compliant
         }
     }
 
+    // A boundary group with a face between two meshed regions of the body (a surface gmsh glued
+    // into both volumes) cannot carry a boundary id: deal.II stops on it with a stack trace.
+    void refuse_interior_boundaries(const std::string &file, const MeshedGeometry &result)
+    {
+      const int        dim = result.dimension;
+      std::set<int>    body;
+      std::vector<int> entities;
+      for (const auto &[name, tag] : result.material_ids)
+        {
+          gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+          body.insert(entities.begin(), entities.end());
+        }
+      for (const auto &[name, tag] : result.boundary_ids)
+        {
+          gmsh::model::getEntitiesForPhysicalGroup(dim - 1, tag, entities);
+          for (const int entity : entities)
+            {
+              std::vector<int> upward, downward;
+              gmsh::model::getAdjacencies(dim - 1, entity, upward, downward);
+              std::vector<int> sides;
+              for (const int region : upward)
+                if (body.count(region))
+                  sides.push_back(region);
+              if (sides.size() >= 2)
+                throw std::runtime_error(
+                  "geometry file '" + file + "': boundary group '" + name + "' holds " +
+                  (dim == 3 ? "surface " : "curve ") + std::to_string(entity) + ", which lies inside the body (between " +
+                  (dim == 3 ? "volumes " : "surfaces ") + std::to_string(sides[0]) + " and " + std::to_string(sides[1]) +
+                  "); boundary conditions and loads act on the outer boundary only: take it out of the group");
+            }
+        }
+    }
+
     void read_physical_groups(const std::string &file, MeshedGeometry &result)
     {
       gmsh::vectorpair groups;
@@ -346,6 +380,7 @@ namespace compliant
         throw std::runtime_error("geometry file '" + file + "' has no physical group of dimension " +
                                  std::to_string(result.dimension) +
                                  ": name the body (e.g. Physical Surface(\"body\") = {...};)");
+      refuse_interior_boundaries(file, result);
     }
 
     // Gmsh 2.2 ASCII through a private temporary file; the text is what the ranks share.

@@ -114,6 +114,8 @@ namespace compliant
     virtual void add(VectorType &y, double a, const VectorType &x) const = 0; // y += a x
     virtual double dot(const VectorType &a, const VectorType &b) const = 0;
     virtual bool   stop_requested() { return false; }
+    // A correction this small (in norm) is round-off of the state (NewtonSystem::correction_floor).
+    virtual double correction_floor() const { return 0; }
     // A correction (or Newton at a fixed load) starts from a state not in equilibrium.
     virtual void begin_correction() {}
     // Whether the problem has conditions of its own (contact): a step that seemed to pass a
@@ -243,8 +245,9 @@ namespace compliant
           system.add_correction(trial, 1, correction);
           dl += d;
           // The residual's round-off floor: a correction this small ends the iteration.
-          if (it > 0 && system.dot(correction, correction) <=
-                          std::pow(settings.correction_tolerance, 2) * system.dot(trial, trial))
+          if (it > 0 && std::sqrt(system.dot(correction, correction)) <=
+                          settings.correction_tolerance * std::sqrt(system.dot(trial, trial)) +
+                            system.correction_floor())
             {
               increment = trial;
               system.add(increment, -1, u);

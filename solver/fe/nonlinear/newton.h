@@ -103,6 +103,10 @@ namespace compliant
     // u + alpha du (a problem may project, e.g. rigid boundaries onto their exact rigid motion).
     virtual void   add_correction(VectorType &u, double alpha, const VectorType &du) const = 0;
     virtual double norm(const VectorType &v) const = 0;
+    // A correction this small (in norm) is round-off of the state itself: Newton has converged as
+    // far as the numbers go (a rigid boundary's displacements are differences of positions, so
+    // they carry the positions' round-off, eps times the part's size).
+    virtual double correction_floor() const { return 0; }
     // Asked before every iteration; true stops with RunInterrupted.
     virtual bool stop_requested() { return false; }
     // The next correction need only reduce the linearization's residual by eta (inexact Newton,
@@ -167,7 +171,7 @@ namespace compliant
           }
         system.add_correction(u, alpha, du);
         if (it > 0 && linearization.settled &&
-            alpha * system.norm(du) <= settings.correction_tolerance * system.norm(u))
+            alpha * system.norm(du) <= settings.correction_tolerance * system.norm(u) + system.correction_floor())
           {
             report.iterations = it + 1;
             return report;
