@@ -1,5 +1,7 @@
 #include "constraints/rigid_motion_check.h"
 
+#include "linear_algebra/rigid_body_modes.h"
+
 #include <deal.II/base/mpi.templates.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
@@ -187,12 +189,10 @@ namespace compliant
     template <int dim>
     double mode_value(unsigned int m, const PlacedDof &dof, const Bodies &bodies)
     {
-      if (m < dim)
-        return m == dof.component ? 1. : 0.;
-      const Tensor<1, 3> r     = (dof.position - bodies.centre[dof.body]) / bodies.size[dof.body];
-      Tensor<1, 3>       axis;
-      axis[dim == 2 ? 2 : m - dim] = 1;
-      return cross_product_3d(axis, r)[dof.component];
+      Tensor<1, dim> r;
+      for (unsigned int d = 0; d < dim; ++d)
+        r[d] = (dof.position[d] - bodies.centre[dof.body][d]) / bodies.size[dof.body];
+      return rigid_body_mode_value<dim>(m, dof.component, r);
     }
 
     // Components below 1e-9 of `scale` (a body's size: round-off off an axis) print as 0.

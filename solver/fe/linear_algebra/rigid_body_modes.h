@@ -12,6 +12,18 @@
 
 namespace compliant
 {
+  // Component c of rigid-body mode m at position r (from the rotations' centre): translations
+  // along x, y (, z), then rotations about z (2D) or x, y, z (3D), e_axis x r.
+  template <int dim>
+  double rigid_body_mode_value(const unsigned int mode, const unsigned int component, const dealii::Tensor<1, dim> &r)
+  {
+    if (mode < dim)
+      return mode == component ? 1. : 0.;
+    const unsigned int axis = dim == 2 ? 2 : mode - dim, a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const auto         at   = [&r](const unsigned int d) { return d < dim ? r[d] : 0.; };
+    return component == a ? -at(b) : component == b ? at(a) : 0.;
+  }
+
   template <int dim>
   class RigidBodyMode : public dealii::Function<dim>
   {
@@ -21,17 +33,8 @@ namespace compliant
     explicit RigidBodyMode(unsigned int mode) : dealii::Function<dim>(dim), mode(mode) {}
     void vector_value(const dealii::Point<dim> &p, dealii::Vector<double> &v) const override
     {
-      v = 0;
-      if (mode < dim)
-        v[mode] = 1;
-      else if (dim == 2)
-        v[0] = -p[1], v[1] = p[0];
-      else
-        {
-          const unsigned int axis = mode - dim, a = (axis + 1) % 3, b = (axis + 2) % 3;
-          v[a] = -p[b];
-          v[b] = p[a];
-        }
+      for (unsigned int c = 0; c < dim; ++c)
+        v[c] = rigid_body_mode_value<dim>(mode, c, p);
     }
 
   private:
