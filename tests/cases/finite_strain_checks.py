@@ -2,7 +2,7 @@
 """Checks of the nonlinear (finite-strain) analysis that need more than one run or a failing run.
 
     finite_strain_checks.py small_load | cutback | stop | locking | snap | matrix_free | plane_stress_pressure
-                            | tpu_flexure | tpu_flexure_slender
+                            | tpu_flexure | tpu_flexure_slender | mixed_units
 """
 import csv
 import json
@@ -207,7 +207,28 @@ elif mode in ("tpu_flexure", "tpu_flexure_slender"):
     if not slender:
         readme_figure(math.hypot(q["reaction_force_base_x"], q["reaction_force_base_y"]), "6e-5",
                       "the follower pressure's net force on the base")
+elif mode == "mixed_units":
+    # The mixed formulation's residual has force rows and volume rows, its unknowns lengths and
+    # pressures. Scaling E and the load by s changes neither the shape nor the path: the arch's arc
+    # length (cases/verification/arch_arc_length.prm, u-p) must take the same steps and give the
+    # same bifurcation and end state at s = 1e-6, 1 and 1e6, to 1e-8. Before the pressure rows and
+    # unknowns were weighed into force and length units, s = 1e-6 ended the path at load factor
+    # 1.049 (the pressure rows' round-off above the force tolerance) and s = 1e6 took 54 steps, not 88.
+    case = os.path.join(cases, "verification", "arch_arc_length.prm")
+    runs = {}
+    for s_ in (1e-6, 1.0, 1e6):
+        q = run_case(case, ["Finite strain/Formulation=mixed", "Material/Materials=*: steel, E=%.17g, nu=0.3" % (1000 * s_),
+                            "Boundary conditions/Rigid=apex: force=0 %.17g" % (-s_)])["quantities"]
+        runs[s_] = q
+        print("s = %g: %d steps, load factor %.10g, bifurcation %.10g, crown %.10g"
+              % (s_, q["load_steps"], q["load_factor"], q["bifurcation_1"], q["displacement_crown_y"]))
+    for s_ in (1e-6, 1e6):
+        a, b = runs[1.0], runs[s_]
+        check(a["load_steps"] == b["load_steps"], "s = %g: the same steps (%d, %d)" % (s_, b["load_steps"], a["load_steps"]))
+        for key in ("load_factor", "bifurcation_1", "displacement_crown_y"):
+            check(abs(a[key] - b[key]) <= 1e-8 * abs(a[key]), "s = %g: %s the same to 1e-8 (%.1e)"
+                  % (s_, key, abs(a[key] - b[key]) / abs(a[key])))
 else:
-    unknown_mode(mode, ("small_load", "cutback", "stop", "locking", "snap", "matrix_free", "plane_stress_pressure",
+    unknown_mode(mode, ("small_load", "cutback", "stop", "locking", "snap", "matrix_free", "plane_stress_pressure", "mixed_units",
                         "tpu_flexure", "tpu_flexure_slender"))
 finish()

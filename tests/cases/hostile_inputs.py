@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 132 inputs.
-README_CENSUS = {"refused with exit 2": 120, "tool errors with exit 1": 6, "must work": 5, "rank failing alone": 1}
+# The README's census of the corpus: 133 inputs.
+README_CENSUS = {"refused with exit 2": 121, "tool errors with exit 1": 6, "must work": 5, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -263,6 +263,11 @@ solver_case("target error negative", [hinge, S, "Target/Relative error=-1"], ["R
 solver_case("modal: 0 modes", [modal, S, "Modal/Number of modes=0"], ["modes"])
 solver_case("mixed formulation in plane stress", [hinge, S, "Discretization/Formulation=mixed"],
             ["Formulation", "plane stress"])
+# nu = 0: the u-p pressure equation ln J = p / lambda has lambda = 0 (it failed at every step with
+# "the residual is not finite").
+solver_case("mixed finite strain with nu = 0",
+            [os.path.join(root, "cases", "verification", "elastica_tip_load.prm"), S, "Finite strain/Formulation=mixed"],
+            ["Formulation", "nu = 0", "lambda > 0"])
 solver_case("mixed formulation in a linkage analysis",
             [os.path.join(root, "cases", "jansen", "leg_structure.prm"), S, "Discretization/Formulation=mixed"],
             ["Formulation", "linkage"])

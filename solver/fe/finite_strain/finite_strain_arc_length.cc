@@ -64,7 +64,8 @@ namespace compliant
           load.add(-1, rhs);
         }
       p.tangent_assembly_seconds += timer.wall_time();
-      const double residual = rhs.l2_norm(), scale = full.l2_norm(), load_norm = load.l2_norm();
+      const double residual = p.residual_norm_of(rhs), scale = p.residual_norm_of(full),
+                   load_norm = p.residual_norm_of(load);
       near_equilibrium      = residual <= p.contact_release_residual * scale;
       ++iteration;
       if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(p.communicator) == 0)
@@ -117,7 +118,7 @@ namespace compliant
       p.add_correction(u, alpha, du);
     }
     void   add(Vector &y, const double a, const Vector &x) const override { y.add(a, x); }
-    double dot(const Vector &a, const Vector &b) const override { return a * b; }
+    double dot(const Vector &a, const Vector &b) const override { return p.unknown_dot(a, b); }
     double correction_floor() const override { return p.correction_round_off(); }
     bool   stop_requested() override { return p.stop_requested && p.stop_requested(); }
 

@@ -75,17 +75,17 @@ namespace compliant
       has_trial = false;
       Linearization result;
       result.settled  = settled;
-      result.residual = last_residual = rhs.l2_norm();
+      result.residual = last_residual = p.residual_norm_of(rhs);
       if (std::getenv("COMPLIANT_DEBUG_NEWTON"))
         {
-          const double scale = iteration > 0 ? full.l2_norm() : 0.; // collective
+          const double scale = iteration > 0 ? p.residual_norm_of(full) : 0.; // collective
           if (Utilities::MPI::this_mpi_process(p.communicator) == 0)
             std::cout << "    it " << iteration << " residual " << result.residual << " scale " << scale
                       << std::endl;
         }
       // Force scale of the convergence test: internal forces including the reactions.
       if (iteration > 0)
-        result.scale = full.l2_norm();
+        result.scale = p.residual_norm_of(full);
       // Contact forces are trusted to free a node once Newton is near equilibrium for the set.
       near_equilibrium = iteration > 0 && result.residual <= p.contact_release_residual * result.scale;
       return result;
@@ -152,7 +152,7 @@ namespace compliant
         }
       p.assemble(trial_ghosted, target, &homogeneous, false, trial_rhs, &trial_full);
       has_trial = true;
-      return trial_rhs.l2_norm();
+      return p.residual_norm_of(trial_rhs);
     }
 
     void add_correction(Vector &u, const double alpha, const Vector &du) const override
@@ -160,7 +160,7 @@ namespace compliant
       p.add_correction(u, alpha, du);
     }
 
-    double norm(const Vector &v) const override { return v.l2_norm(); }
+    double norm(const Vector &v) const override { return std::sqrt(p.unknown_dot(v, v)); }
 
     double correction_floor() const override { return p.correction_round_off(); }
 

@@ -96,6 +96,13 @@ namespace compliant
     if (mixed && !laws.begin()->second.supports_mixed())
       throw std::invalid_argument("Finite strain/Formulation: the mixed formulation needs the "
                                   "neo-Hookean, Mooney-Rivlin, Ogden or Yeoh law");
+    // Its pressure equation ln J = p / lambda divides by lambda: nu = 0 has nothing to constrain.
+    for (const auto &[id, law] : laws)
+      if (mixed && !(law.lambda() > 0))
+        throw std::invalid_argument("Finite strain/Formulation = mixed: material '" + materials.at(id).name +
+                                    "' has nu = 0 (Lame lambda " + std::to_string(law.lambda()) +
+                                    "); the pressure equation needs lambda > 0: use the displacement "
+                                    "formulation, which does not lock without a volumetric stiffness");
     this->resolve_boundary_conditions();
     if (!boundary_conditions.total_forces.empty())
       throw std::invalid_argument("Loads/Total force: not available in finite strain (the loaded "
@@ -153,6 +160,56 @@ namespace compliant
         largest_coordinate = Utilities::MPI::max(largest, communicator); // one verdict on every rank
       }
     return 8 * std::numeric_limits<double>::epsilon() * largest_coordinate * std::sqrt(double(dof_handler.n_dofs()));
+  }
+
+  template <int dim>
+  const PETScWrappers::MPI::Vector &FiniteStrainProblem<dim>::pressure_weights() const
+  {
+    if (pressure_weight.size() == dof_handler.n_dofs())
+      return pressure_weight;
+    double mu = 0, volume = 0;
+    for (const auto &[id, law] : laws)
+      mu = std::max(mu, law.small_strain_shear_modulus());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        volume += cell->measure();
+    volume                     = Utilities::MPI::sum(volume, communicator);
+    const double h             = std::pow(volume / triangulation.n_global_active_cells(), 1. / dim);
+    const double weight        = mu > 0 && h > 0 ? mu / h : 1.;
+    ComponentMask pressure_only(dim + 1, false);
+    pressure_only.set(dim, true);
+    const IndexSet pressures = DoFTools::extract_dofs(dof_handler, pressure_only);
+    pressure_weight.reinit(locally_owned_dofs, communicator);
+    for (const auto index : locally_owned_dofs)
+      pressure_weight(index) = pressures.is_element(index) ? weight : 1.;
+    pressure_weight.compress(VectorOperation::insert);
+    return pressure_weight;
+  }
+
+  template <int dim>
+  double FiniteStrainProblem<dim>::residual_norm_of(const PETScWrappers::MPI::Vector &residual) const
+  {
+    if (!mixed)
+      return residual.l2_norm();
+    PETScWrappers::MPI::Vector weighted(residual);
+    weighted.scale(pressure_weights());
+    return weighted.l2_norm();
+  }
+
+  template <int dim>
+  double FiniteStrainProblem<dim>::unknown_dot(const PETScWrappers::MPI::Vector &a,
+                                               const PETScWrappers::MPI::Vector &b) const
+  {
+    if (!mixed)
+      return a * b;
+    // Pressures times h / mu in both factors: divide each by the pressure rows' weight.
+    PETScWrappers::MPI::Vector wa(a), wb(b), inverse(pressure_weights());
+    for (const auto index : locally_owned_dofs)
+      inverse(index) = 1. / inverse(index);
+    inverse.compress(VectorOperation::insert);
+    wa.scale(inverse);
+    wb.scale(inverse);
+    return wa * wb;
   }
 
   template <int dim>
@@ -276,7 +333,7 @@ namespace compliant
   {
     Timer contact_timer;
     assemble(u, lambda, &hanging_node_constraints, false, full);
-    const double force_tolerance = settings.residual_tolerance * full.l2_norm();
+    const double force_tolerance = settings.residual_tolerance * residual_norm_of(full);
     const auto   update          = contact->update_active_set(u, full, lambda, release, force_tolerance);
     if (std::getenv("COMPLIANT_DEBUG_NEWTON") && Utilities::MPI::this_mpi_process(communicator) == 0)
       std::cout << "    contact: " << update.changes << " changes, " << update.pulling << " pulling, violation "
@@ -358,7 +415,7 @@ namespace compliant
     ghosted = u;
     PETScWrappers::MPI::Vector rhs(locally_owned_dofs, communicator);
     assemble(ghosted, lambda, &homogeneous, false, rhs);
-    return rhs.l2_norm();
+    return residual_norm_of(rhs);
   }
 
   template <int dim>

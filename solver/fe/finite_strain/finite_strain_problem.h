@@ -214,8 +214,21 @@ namespace compliant
     // corrections at 1e-16. 0 without rigid boundaries. Collective on its first call.
     double correction_round_off() const;
 
+    // Norms of the mixed formulation's vectors in one unit: its pressure rows are volumes and its
+    // pressures stresses, beside forces and lengths. A residual's pressure rows count times mu / h,
+    // an unknown's pressures times h / mu (mu the largest shear modulus, h the mean cell size),
+    // so that scaling E leaves every test unchanged. Measured before (E and loads x 1e-6): the
+    // pressure rows' round-off stood above the force tolerance and the arc length ended past its
+    // load factor (1.049); x 1e6, the pressures ruled the arc length (54 steps instead of 88).
+    // Plain l2 norms and dot products without the mixed formulation. Collective.
+    double residual_norm_of(const dealii::PETScWrappers::MPI::Vector &residual) const;
+    double unknown_dot(const dealii::PETScWrappers::MPI::Vector &a, const dealii::PETScWrappers::MPI::Vector &b) const;
+
   private:
     mutable double largest_coordinate = -1; // of the mesh's vertices, over all ranks
+    // 1 on displacement DoFs, mu / h on pressure DoFs (owned entries); built on first use.
+    mutable dealii::PETScWrappers::MPI::Vector pressure_weight;
+    const dealii::PETScWrappers::MPI::Vector  &pressure_weights() const;
     friend class FiniteStrainNewtonSystem<dim>;
     friend class FiniteStrainContinuationSystem<dim>;
     // The law of a body's material (for output): the one made at setup.

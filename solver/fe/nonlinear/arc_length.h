@@ -181,6 +181,16 @@ namespace compliant
                 return false;
               system.solve(correction, unused);
               system.add_correction(u, 1, correction);
+              // As on the path: a correction at the state's round-off ends it (the residual may not
+              // fall further there); not where the problem's own conditions (contact) may still change.
+              if (it > 0 && !system.has_own_conditions() &&
+                  std::sqrt(system.dot(correction, correction)) <=
+                    settings.correction_tolerance * std::sqrt(system.dot(u, u)) + system.correction_floor())
+                {
+                  report.iterations += it + 1;
+                  report.residual = linearization.residual;
+                  return true;
+                }
             }
         }
       catch (const StepFailure &)
