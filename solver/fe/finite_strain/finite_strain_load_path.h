@@ -8,6 +8,7 @@
 #include "finite_strain/finite_strain_problem.h"
 #include "nonlinear/load_stepping.h"
 
+#include <cmath>
 #include <functional>
 #include <utility>
 
@@ -40,7 +41,7 @@ namespace compliant
       dealii::PETScWrappers::MPI::Vector change(problem.locally_owned_dofs, problem.communicator);
       change = problem.solution;
       change.add(-1, saved);
-      return change.l2_norm();
+      return std::sqrt(problem.unknown_dot(change, change)); // mixed: pressures in length units
     }
     unsigned int unstable_modes() override { return problem.unstable_modes(); }
     bool         stop_requested() override { return interruption && interruption(); }

@@ -96,13 +96,15 @@ namespace compliant
     if (mixed && !laws.begin()->second.supports_mixed())
       throw std::invalid_argument("Finite strain/Formulation: the mixed formulation needs the "
                                   "neo-Hookean, Mooney-Rivlin, Ogden or Yeoh law");
-    // Its pressure equation ln J = p / lambda divides by lambda: nu = 0 has nothing to constrain.
+    // Its pressure equation ln J = p / lambda divides by lambda, and the stability check's inertia
+    // count takes the pressure block -M / lambda as negative definite.
     for (const auto &[id, law] : laws)
       if (mixed && !(law.lambda() > 0))
         throw std::invalid_argument("Finite strain/Formulation = mixed: material '" + materials.at(id).name +
-                                    "' has nu = 0 (Lame lambda " + std::to_string(law.lambda()) +
-                                    "); the pressure equation needs lambda > 0: use the displacement "
-                                    "formulation, which does not lock without a volumetric stiffness");
+                                    "' has a volumetric constant lambda (from nu, the bulk modulus or the "
+                                    "Mooney-Rivlin c2) of " + std::to_string(law.lambda()) +
+                                    " (nu = 0 gives 0); the pressure equation needs lambda > 0: use the "
+                                    "displacement formulation, which does not lock without a volumetric stiffness");
     this->resolve_boundary_conditions();
     if (!boundary_conditions.total_forces.empty())
       throw std::invalid_argument("Loads/Total force: not available in finite strain (the loaded "
@@ -180,9 +182,14 @@ namespace compliant
     pressure_only.set(dim, true);
     const IndexSet pressures = DoFTools::extract_dofs(dof_handler, pressure_only);
     pressure_weight.reinit(locally_owned_dofs, communicator);
+    inverse_pressure_weight.reinit(locally_owned_dofs, communicator);
     for (const auto index : locally_owned_dofs)
-      pressure_weight(index) = pressures.is_element(index) ? weight : 1.;
+      {
+        pressure_weight(index)         = pressures.is_element(index) ? weight : 1.;
+        inverse_pressure_weight(index) = pressures.is_element(index) ? 1. / weight : 1.;
+      }
     pressure_weight.compress(VectorOperation::insert);
+    inverse_pressure_weight.compress(VectorOperation::insert);
     return pressure_weight;
   }
 
@@ -202,13 +209,11 @@ namespace compliant
   {
     if (!mixed)
       return a * b;
-    // Pressures times h / mu in both factors: divide each by the pressure rows' weight.
-    PETScWrappers::MPI::Vector wa(a), wb(b), inverse(pressure_weights());
-    for (const auto index : locally_owned_dofs)
-      inverse(index) = 1. / inverse(index);
-    inverse.compress(VectorOperation::insert);
-    wa.scale(inverse);
-    wb.scale(inverse);
+    // Pressures times h / mu in both factors.
+    pressure_weights();
+    PETScWrappers::MPI::Vector wa(a), wb(b);
+    wa.scale(inverse_pressure_weight);
+    wb.scale(inverse_pressure_weight);
     return wa * wb;
   }
 

@@ -209,9 +209,9 @@ namespace compliant
 
     // The norm below which a Newton correction is round-off of the state itself. Rigid boundaries
     // place their nodes at x_c + R (X - pivot) and take u = x - X, a few eps of the largest
-    // coordinate per DoF: measured on a 5 mm steel cantilever in SI units under 0.1 N
+    // coordinate per DoF: measured on a steel box 5 x 1 x 1 in SI units (m, Pa) under 0.1 N
     // (displacements 1e-9 of its size), the residual stalled at 3e-4 of the force scale, and the
-    // corrections at 1e-16. 0 without rigid boundaries. Collective on its first call.
+    // corrections at 1e-16 (case.rigid_boundary_stiff_units: a 10 m bar under 1 N). 0 without rigid boundaries. Collective on its first call.
     double correction_round_off() const;
 
     // Norms of the mixed formulation's vectors in one unit: its pressure rows are volumes and its
@@ -227,7 +227,7 @@ namespace compliant
   private:
     mutable double largest_coordinate = -1; // of the mesh's vertices, over all ranks
     // 1 on displacement DoFs, mu / h on pressure DoFs (owned entries); built on first use.
-    mutable dealii::PETScWrappers::MPI::Vector pressure_weight;
+    mutable dealii::PETScWrappers::MPI::Vector pressure_weight, inverse_pressure_weight;
     const dealii::PETScWrappers::MPI::Vector  &pressure_weights() const;
     friend class FiniteStrainNewtonSystem<dim>;
     friend class FiniteStrainContinuationSystem<dim>;

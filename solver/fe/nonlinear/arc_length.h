@@ -187,9 +187,12 @@ namespace compliant
                   std::sqrt(system.dot(correction, correction)) <=
                     settings.correction_tolerance * std::sqrt(system.dot(u, u)) + system.correction_floor())
                 {
+                  // Linearised at the state returned, as every other success: the caller's next
+                  // solve takes its tangent and inertia from here.
+                  const auto last = system.linearize(u, target);
                   report.iterations += it + 1;
-                  report.residual = linearization.residual;
-                  return true;
+                  report.residual = last.residual;
+                  return std::isfinite(last.residual);
                 }
             }
         }
