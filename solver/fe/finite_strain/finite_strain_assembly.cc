@@ -72,7 +72,6 @@ namespace compliant
       // A displacement shape function has one nonzero component: its gradient is e_c (x) grad N,
       // and the geometric stiffness grad phi_i S : grad phi_j is (S grad N_i) . grad N_j when
       // both have the same component c, else zero.
-      std::vector<Tensor<2, dim>>          grad_phi;
       std::vector<Tensor<1, dim>>          grad_N, S_grad_N;
       std::vector<unsigned int>            component;
       // The same per-i data laid out by entry for the displacement-only pair loop: dE with its
@@ -81,7 +80,6 @@ namespace compliant
       static constexpr unsigned int        n_sym = dim * (dim + 1) / 2;
       std::vector<double>                  dE_entries, C_dE_entries, grad_N_by_component;
       std::vector<SymmetricTensor<2, dim>> dE, C_dE;
-      std::vector<Tensor<1, dim>>          phi;
       std::vector<double>                  q_phi;
       std::vector<bool>                    is_u;
       Vector<double>                       field_value, pressure_value;
@@ -167,7 +165,6 @@ namespace compliant
       , grad_u(n_q_points)
       , face_grad_u(n_face_q_points)
       , p_values(n_q_points)
-      , grad_phi(n)
       , grad_N(n)
       , S_grad_N(n)
       , component(n)
@@ -176,7 +173,6 @@ namespace compliant
       , grad_N_by_component(dim * dim * n)
       , dE(n)
       , C_dE(n)
-      , phi(n)
       , q_phi(n)
       , is_u(n)
       , field_value(dim)
@@ -211,26 +207,31 @@ namespace compliant
               break;
             }
           const auto   E        = green_lagrange(grad_u[q]);
-          const auto   response = response_of(law, E, mixed ? p_values[q] : 0.0);
+          const auto   response = response_of(law, E, mixed ? p_values[q] : 0.0, with_matrix);
           if (!std::isfinite(response.S.norm()))
             {
               ++inverted; // no plane-stress state: as bad as an inverted element
               break;
             }
           const double JxW      = fe_values.JxW(q) * thickness;
-          const auto   Ci       = invert(unit_symmetric_tensor<dim>() + 2 * E);
           const Tensor<2, dim> S    = response.S;
+          // A displacement shape function e_c N has gradient e_c (x) grad N: its virtual strain
+          // is sym(F^T e_c (x) grad N) = sym(F[c] (x) grad N), and S : dE = (F S)[c] . grad N
+          // (the first Piola stress), so the residual needs no tensor per shape function.
+          const Tensor<2, dim> P    = F * S;
           for (unsigned int i = 0; i < n; ++i)
             {
               if (is_u[i])
                 {
-                  grad_phi[i] = fe_values[displacement].gradient(i, q);
-                  phi[i]      = fe_values[displacement].value(i, q);
-                  dE[i]       = symmetrize(transpose(F) * grad_phi[i]);
-                  if (!with_matrix) // a residual alone needs dE only
+                  const unsigned int c = component[i];
+                  grad_N[i]            = fe_values.shape_grad(i, q);
+                  cell_rhs(i) -= (P[c] * grad_N[i] - body_force[c] * fe_values.shape_value(i, q)) * JxW;
+                  if (!with_matrix) // a residual alone needs no more
                     continue;
+                  for (unsigned int k = 0; k < dim; ++k)
+                    for (unsigned int l = k; l < dim; ++l)
+                      dE[i][k][l] = 0.5 * (F[c][k] * grad_N[i][l] + F[c][l] * grad_N[i][k]);
                   C_dE[i]     = response.tangent * dE[i];
-                  grad_N[i]   = grad_phi[i][component[i]];
                   S_grad_N[i] = S * grad_N[i]; // geometric stiffness, once per i
                   if (mixed)
                     continue;
@@ -239,21 +240,20 @@ namespace compliant
                       dE_entries[m * n + i]   = (m < dim ? 1. : 2.) * dE[i].access_raw_entry(m);
                       C_dE_entries[m * n + i] = C_dE[i].access_raw_entry(m);
                     }
-                  for (unsigned int c = 0; c < dim; ++c)
-                    for (unsigned int d = 0; d < dim; ++d)
-                      grad_N_by_component[(c * dim + d) * n + i] = c == component[i] ? grad_N[i][d] : 0.;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    grad_N_by_component[(c * dim + d) * n + i] = grad_N[i][d];
                 }
               else
-                q_phi[i] = fe_values[pressure].value(i, q);
+                {
+                  q_phi[i] = fe_values.shape_value(i, q);
+                  cell_rhs(i) -= (response.log_J - p_values[q] / law.lambda()) * q_phi[i] * JxW;
+                }
             }
+          if (!with_matrix)
+            continue;
+          const auto Ci = mixed ? invert(unit_symmetric_tensor<dim>() + 2 * E) : SymmetricTensor<2, dim>();
           for (unsigned int i = 0; i < n; ++i)
             {
-              if (is_u[i])
-                cell_rhs(i) -= (response.S * dE[i] - body_force * phi[i]) * JxW;
-              else
-                cell_rhs(i) -= (response.log_J - p_values[q] / law.lambda()) * q_phi[i] * JxW;
-              if (!with_matrix)
-                continue;
               // The volume tangent is symmetric: the lower triangle, mirrored after the
               // quadrature loop (the follower-pressure part is not symmetric).
               if (!mixed)
@@ -335,7 +335,7 @@ namespace compliant
                   if (plane_stress)
                     {
                       const auto response = response_of(
-                        law, 0.5 * (symmetrize(transpose(F) * F) - unit_symmetric_tensor<dim>()), 0.0);
+                        law, 0.5 * (symmetrize(transpose(F) * F) - unit_symmetric_tensor<dim>()), 0.0, true);
                       if (!std::isfinite(response.E33) || !(1 + 2 * response.E33 > 0))
                         {
                           ++inverted; // no plane-stress state here: cut the step back
@@ -388,7 +388,9 @@ namespace compliant
     if (full_residual != nullptr)
       *full_residual = 0;
     const auto response_of = [this](const HyperelasticLaw &law, const SymmetricTensor<2, dim> &E,
-                                    const double pressure) { return material_response(law, E, pressure); };
+                                    const double pressure, const bool with_tangent) {
+      return material_response(law, E, pressure, with_tangent);
+    };
     CellAssembler<dim, decltype(response_of)> cells(*mapping, *fe, *quadrature, *face_quadrature, u, lambda,
                                                     thickness, mixed, plane_stress, with_matrix, response_of);
 

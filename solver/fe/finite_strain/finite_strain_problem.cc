@@ -67,12 +67,13 @@ namespace compliant
   template <int dim>
   StressResponse<dim> FiniteStrainProblem<dim>::material_response(const HyperelasticLaw &law,
                                                                   const SymmetricTensor<2, dim> &E,
-                                                                  const double pressure) const
+                                                                  const double pressure,
+                                                                  const bool   with_tangent) const
   {
     if constexpr (dim == 2)
       if (plane_stress)
         return law.plane_stress_response(E);
-    return law.response(E, mixed, pressure);
+    return law.response(E, mixed, pressure, with_tangent);
   }
 
   template <int dim>
@@ -444,7 +445,7 @@ namespace compliant
   {
     const HyperelasticLaw law = law_of(material);
     const Tensor<2, dim>  F = unit_symmetric_tensor<dim>() + grad_u;
-    const auto            r = material_response(law, green_lagrange(grad_u), pressure);
+    const auto            r = material_response(law, green_lagrange(grad_u), pressure, false);
     // in plane stress J includes the thickness stretch sqrt(C33)
     const double J = determinant(F) * (plane_stress ? std::sqrt(1 + 2 * r.E33) : 1.0);
     sigma_zz       = r.S33 / J;
@@ -461,7 +462,7 @@ namespace compliant
   double FiniteStrainProblem<dim>::energy_density(const Tensor<2, dim> &grad_u,
                                                   const Material       &material, double) const
   {
-    return material_response(law_of(material), green_lagrange(grad_u), 0.0).energy;
+    return material_response(law_of(material), green_lagrange(grad_u), 0.0, false).energy;
   }
 
   template <int dim>

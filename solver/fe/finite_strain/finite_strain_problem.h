@@ -233,10 +233,11 @@ namespace compliant
     friend class FiniteStrainContinuationSystem<dim>;
     // The law of a body's material (for output): the one made at setup.
     HyperelasticLaw law_of(const Material &material) const;
-    // The law's response at one point: plane stress (2D) or plane strain/3D.
+    // The law's response at one point: plane stress (2D) or plane strain/3D; the tangent only
+    // `with_tangent` (HyperelasticLaw::response).
     StressResponse<dim> material_response(const HyperelasticLaw &law,
                                           const dealii::SymmetricTensor<2, dim> &E,
-                                          double pressure) const;
+                                          double pressure, bool with_tangent = true) const;
     // Dirichlet values at load factor `lambda` minus the current displacement (first Newton
     // iteration), or homogeneous (later iterations).
     // Rigid boundaries are linearised at u; for_sparsity: their lines name every DoF that may

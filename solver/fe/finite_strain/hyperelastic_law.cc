@@ -79,7 +79,7 @@ namespace compliant
 
   template <int dim>
   StressResponse<dim> HyperelasticLaw::response(const SymmetricTensor<2, dim> &E, const bool mixed,
-                                                const double pressure) const
+                                                const double pressure, const bool with_tangent) const
   {
     StressResponse<dim>           r;
     if (ogden)
@@ -92,14 +92,14 @@ namespace compliant
     if (svk)
       {
         r.S       = lambda_small_strain * trE * I + 2 * mu * E;
-        r.tangent = lambda_small_strain * outer_product(I, I) + 2 * mu * identity_tensor<dim>();
+        if (with_tangent)
+          r.tangent = lambda_small_strain * outer_product(I, I) + 2 * mu * identity_tensor<dim>();
         r.energy  = 0.5 * lambda_small_strain * trE * trE + mu * (E * E);
         r.S33     = dim == 2 ? lambda_small_strain * trE : 0;
         return r;
       }
     const SymmetricTensor<2, dim> C   = I + 2 * E;
     const auto                    Ci  = invert(C);
-    const auto                    IC  = inverse_product(Ci);
     if (isochoric)
       {
         const double kappa = lambda_small_strain + 2 * mu / 3;
@@ -107,10 +107,14 @@ namespace compliant
         const double Jm23  = std::exp(-2.0 / 3.0 * r.log_J);
         const double J2m1  = std::expm1(2 * r.log_J); // J^2 - 1 without cancellation
         r.S = mu * Jm23 * (I - I1 / 3 * Ci) + 0.5 * kappa * J2m1 * Ci;
-        r.tangent = 2 * mu * Jm23 *
-                      (-1.0 / 3 * outer_product(I, Ci) - 1.0 / 3 * outer_product(Ci, I) +
-                       I1 / 9 * outer_product(Ci, Ci) + I1 / 3 * IC) +
-                    kappa * (J2m1 + 1) * outer_product(Ci, Ci) - kappa * J2m1 * IC;
+        if (with_tangent)
+          {
+            const auto IC = inverse_product(Ci);
+            r.tangent     = 2 * mu * Jm23 *
+                          (-1.0 / 3 * outer_product(I, Ci) - 1.0 / 3 * outer_product(Ci, I) +
+                           I1 / 9 * outer_product(Ci, Ci) + I1 / 3 * IC) +
+                        kappa * (J2m1 + 1) * outer_product(Ci, Ci) - kappa * J2m1 * IC;
+          }
         r.energy = 0.5 * mu * (Jm23 * I1 - 3) + 0.25 * kappa * (J2m1 - 2 * r.log_J);
         if (dim == 2)
           r.S33 = mu * Jm23 * (1 - I1 / 3) + 0.5 * kappa * J2m1;
@@ -124,9 +128,12 @@ namespace compliant
 
     // 2 c1 (I - C^-1) + 2 c2 [(I1 I - C) - 2 C^-1] + p C^-1, the bracket = 2 tr E I - 2 E + 2 (I - C^-1)
     r.S = 2 * c1 * I_minus_Ci + 2 * c2 * (2 * trE * I - 2 * E + 2 * I_minus_Ci) + p * Ci;
-    r.tangent = 4 * c2 * (outer_product(I, I) - identity_tensor<dim>()) + 2 * (a - p) * IC;
-    if (!mixed)
-      r.tangent += lambda_volumetric * outer_product(Ci, Ci);
+    if (with_tangent)
+      {
+        r.tangent = 4 * c2 * (outer_product(I, I) - identity_tensor<dim>()) + 2 * (a - p) * inverse_product(Ci);
+        if (!mixed)
+          r.tangent += lambda_volumetric * outer_product(Ci, Ci);
+      }
     // I1 - 3 = 2 tr E; I2 - 3 = 4 tr E + 2 ((tr E)^2 - E:E) (also in plane strain, C33 = 1)
     r.energy = c1 * 2 * trE + c2 * (4 * trE + 2 * (trE * trE - E * E)) - a * r.log_J +
                (mixed ? pressure * r.log_J - pressure * pressure / (2 * lambda_volumetric) :
@@ -202,7 +209,7 @@ namespace compliant
   }
 
   template StressResponse<2> HyperelasticLaw::response<2>(const SymmetricTensor<2, 2> &, bool,
-                                                          double) const;
+                                                          double, bool) const;
   template StressResponse<3> HyperelasticLaw::response<3>(const SymmetricTensor<2, 3> &, bool,
-                                                          double) const;
+                                                          double, bool) const;
 } // namespace compliant

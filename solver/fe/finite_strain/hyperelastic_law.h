@@ -67,10 +67,11 @@ namespace compliant
 
     // Full response to the Green-Lagrange strain E = (C - I)/2 (E, not C: the stress of small
     // strains is then free of cancellation); with `mixed`, the volumetric part is carried by the
-    // pressure p instead.
+    // pressure p instead. Without `with_tangent` (a residual) the neo-Hookean, Mooney-Rivlin,
+    // Saint Venant-Kirchhoff and isochoric laws leave `tangent` zero: it costs more than S.
     template <int dim>
     StressResponse<dim> response(const dealii::SymmetricTensor<2, dim> &E, bool mixed,
-                                 double pressure) const;
+                                 double pressure, bool with_tangent = true) const;
 
     // Plane stress: the 3D law with the thickness strain E33 solved from S33 = 0 (Newton on one
     // scalar per point), the in-plane tangent condensed, dS/dE = T - T_ab33 T_33cd / T_3333.
