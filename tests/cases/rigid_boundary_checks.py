@@ -9,7 +9,7 @@ digit above it; 2D to 1e-11 is case.rigid_end_moment); the torque's twist needs 
 (measured 3.2e-9; bar 6e-9); finite strain at a small load = linear to 1e-5 (the rotation is ~1e-5,
 so the geometric terms are of that order: measured 1.0e-5 on the moment, 9.8e-6 on the deflection;
 bar 2e-5), the end moving in by 1/2 int v'^2 dx to 0.02 % (measured -0.022 %; bar 0.03 %); 1, 2 and
-3 ranks the same to 1e-12.
+3 ranks the same to 1e-11.
 """
 import os
 import sys
@@ -81,7 +81,10 @@ elif mode == "small_load":
     check(abs(measured / shortening - 1) < 3e-4, "the end moves in by 1/2 int v'^2 dx to 0.02 %% (README; %+.2e)"
           % (measured / shortening - 1))
 elif mode == "ranks":
-    # The rigid constraint ties nodes that METIS puts on different ranks: 1, 2 and 3 ranks agree.
+    # The rigid constraint ties nodes that METIS puts on different ranks: 1, 2 and 3 ranks agree,
+    # to round-off carried through Newton's path (measured 2.7e-12; a wrong tie across ranks is
+    # O(1)). Not tighter: Newton stops at 1e-10 of the force scale, and two valid paths (with and
+    # without the secant predictor) end 8e-11 apart.
     case = os.path.join(cases, "verification", "rollup_rigid_moment.prm")
     sets = ["Boundary conditions/Rigid=right: moment=_pi/2*1000/12/100, force=0.001 0.002"]
     results = [run_case(case, sets, np=n)["quantities"] for n in (1, 2, 3)]
@@ -89,7 +92,7 @@ elif mode == "ranks":
         values = [r[key] for r in results]
         print("%-24s %s" % (key, " ".join("%.12g" % v for v in values)))
         spread = max(abs(v - values[0]) for v in values) / abs(values[0])
-        check(spread <= 1e-12, "%s the same on 1, 2, 3 ranks to 1e-12 (README; %.1e)" % (key, spread))
+        check(spread <= 1e-11, "%s the same on 1, 2, 3 ranks to 1e-11 (README; %.1e)" % (key, spread))
 elif mode == "stiff_units":
     # Steel in SI units (E = 2.1e11 Pa) on the 10 m bar under 1 N: displacements 1e-9 of its size.
     # A rigid boundary's displacements are differences of positions, round-off of eps times the

@@ -211,27 +211,58 @@ namespace compliant
     newton.line_search_steps  = settings.line_search_steps;
     newton.forcing_max        = newton_forcing_max;
     PETScWrappers::MPI::Vector u(locally_owned_dofs, communicator), du(locally_owned_dofs, communicator);
-    u = solution;
-    FiniteStrainNewtonSystem<dim> system(*this, target);
-    NewtonReport                  report;
-    try
+    bool         predicted = predict_by_secant(target, u);
+    NewtonReport report;
+    for (;;)
+      try
+        {
+          if (!predicted)
+            u = solution;
+          FiniteStrainNewtonSystem<dim> system(*this, target);
+          report = newton_solve(system, u, du, newton);
+          break;
+        }
+      catch (const std::runtime_error &e)
+        {
+          // solution is untouched: the converged state of the previous step remains, and so does
+          // its friction state (stick, slip, anchors) rather than the failed Newton's
+          restore_contact_state();
+          newton_factorization.reset();
+          if (predicted)
+            {
+              predicted = false; // the secant overshot (an inverted element, a far state): plain start
+              continue;
+            }
+          throw StepFailure(e.what());
+        }
+    if (target > load_factor)
       {
-        report = newton_solve(system, u, du, newton);
+        secant.start             = solution;
+        secant.load_factor_start = load_factor;
+        secant.load_factor_then  = target;
       }
-    catch (const std::runtime_error &e)
-      {
-        // solution is untouched: the converged state of the previous step remains, and so does
-        // its friction state (stick, slip, anchors) rather than the failed Newton's
-        restore_contact_state();
-        newton_factorization.reset();
-        throw StepFailure(e.what());
-      }
+    else
+      secant.load_factor_then = -1;
     // The factor serves this step's iterations only: the stability check, a buckling or dual
     // solve and the next step's growing tangent must not find a second one held beside theirs.
     newton_factorization.reset();
     solution    = u;
     load_factor = target;
     return report;
+  }
+
+  template <int dim>
+  bool FiniteStrainProblem<dim>::predict_by_secant(const double target, PETScWrappers::MPI::Vector &u) const
+  {
+    // Measured on cases/benchmarks/flexure_finite_strain.prm: see the README (Speed).
+    if (contact || secant.load_factor_then != load_factor || !(target > load_factor) ||
+        !(load_factor > secant.load_factor_start))
+      return false;
+    const double ratio = (target - load_factor) / (load_factor - secant.load_factor_start);
+    u                  = solution;
+    u.add(ratio, solution);
+    u.add(-ratio, secant.start);
+    return true;
   }
 
   template NewtonReport FiniteStrainProblem<2>::solve_to(double);

@@ -78,7 +78,9 @@ namespace compliant
 
     // Newton from the current state to the given load factor. On success the state is updated;
     // on failure (no convergence, det F <= 0, linear solver) the state is restored and a
-    // StepFailure says why.
+    // StepFailure says why. A step forward from the end of the last one starts from the secant
+    // through the last two converged states (falling back to the current state if Newton fails
+    // from there).
     NewtonReport solve_to(double load_factor);
 
     // Arc-length continuation from the current state to load factor 1 (loads only, no prescribed
@@ -101,8 +103,9 @@ namespace compliant
     // Returns to an earlier converged state (a step the analysis rejects after the fact).
     void restore(const dealii::PETScWrappers::MPI::Vector &state, double state_load_factor)
     {
-      solution    = state;
-      load_factor = state_load_factor;
+      solution                = state;
+      load_factor             = state_load_factor;
+      secant.load_factor_then = -1; // the secant predictor's last step no longer ends here
     }
     // Contact: the converged state's active sets (obstacles and pairs) are saved; with friction
     // the next load step also starts with the held nodes sticking where this state has them.
@@ -291,6 +294,16 @@ namespace compliant
     void solve_direct(dealii::PETScWrappers::MPI::Vector &du, const dealii::PETScWrappers::MPI::Vector &rhs);
     bool symmetric_tangent() const;
     std::shared_ptr<DirectFactorization> newton_factorization;
+    // The state before the last step solve_to took, for the secant predictor: valid while the
+    // current state is that step's end (load_factor_then == load_factor).
+    struct SecantHistory
+    {
+      dealii::PETScWrappers::MPI::Vector start;
+      double                             load_factor_start = 0, load_factor_then = -1;
+    } secant;
+    // The predictor's start for a step to `target` in u, or false (no history, a step back,
+    // contact: its active set belongs to the converged state).
+    bool predict_by_secant(double target, dealii::PETScWrappers::MPI::Vector &u) const;
     void add_level_constraints(const dealii::DoFHandler<dim>     &dofs,
                                dealii::AffineConstraints<double> &constraints) const;
 
