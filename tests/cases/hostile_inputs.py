@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 133 inputs.
-README_CENSUS = {"refused with exit 2": 121, "tool errors with exit 1": 6, "must work": 5, "rank failing alone": 1}
+# The README's census of the corpus: 134 inputs.
+README_CENSUS = {"refused with exit 2": 122, "tool errors with exit 1": 6, "must work": 5, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -476,6 +476,25 @@ solver_case("a boundary group inside the body (two glued volumes' shared face)",
                           "\nend\nsubsection Material\n  set Materials = *: steel\nend\n"
                           "subsection Boundary conditions\n  set Clamped = left\nend\n")],
             ["glued.prm", "Mesh file", "boundary group 'joint'", "inside the body", "between volumes"])
+# The same mistake in a plain MSH 2.2 file (two hexahedra, a physical surface on the face they
+# share), which carries no topology: found from the elements themselves.
+two_hex_nodes = [(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1, 2)]
+number = {p: i + 1 for i, p in enumerate(two_hex_nodes)}
+quad_at = lambda x: [number[(x, 0, 0)], number[(x, 1, 0)], number[(x, 1, 1)], number[(x, 0, 1)]]
+hex_at = lambda x: [number[(x, 0, 0)], number[(x + 1, 0, 0)], number[(x + 1, 1, 0)], number[(x, 1, 0)],
+                    number[(x, 0, 1)], number[(x + 1, 0, 1)], number[(x + 1, 1, 1)], number[(x, 1, 1)]]
+two_hex_elements = [(3, 2, quad_at(0)), (3, 3, quad_at(1)), (5, 1, hex_at(0)), (5, 1, hex_at(1))]
+two_hex = scratch_file("two_hex.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n3 1 \"body\"\n"
+                       "2 2 \"left\"\n2 3 \"joint\"\n$EndPhysicalNames\n$Nodes\n12\n" +
+                       "".join("%d %d %d %d\n" % ((number[p],) + p) for p in two_hex_nodes) +
+                       "$EndNodes\n$Elements\n4\n" +
+                       "".join("%d %d 2 %d %d %s\n" % (i + 1, t, g, i + 1, " ".join(map(str, n)))
+                               for i, (t, g, n) in enumerate(two_hex_elements)) + "$EndElements\n")
+solver_case("a boundary group inside the body in a plain MSH 2.2 file (no topology)",
+            [scratch_file("two_hex.prm", "set Model = 3d\nsubsection Geometry\n  set Mesh file = " + two_hex +
+                          "\nend\nsubsection Material\n  set Materials = *: steel\nend\n"
+                          "subsection Boundary conditions\n  set Clamped = left\nend\n")],
+            ["two_hex.prm", "Mesh file", "boundary group 'joint'", "inside the body", "shared by two cells"])
 solver_case("held without a clamp: some components on each of two faces",
             [cantilever_3d, S, "Boundary conditions/Clamped=", S, "Boundary conditions/Displacement=left: x=0, y=0; right: z=0",
              "--check"], ["is valid"], code=0)

@@ -2,6 +2,7 @@
 
 #include "mesh/abaqus_mesh.h"
 #include "mesh/contained_call.h"
+#include "mesh/interior_boundaries.h"
 #include "mesh/memory_estimate.h"
 #include "mesh/mesh_size_guard.h"
 
@@ -325,39 +326,6 @@ namespace compliant
             cells += t.size();
           std::fprintf(stderr, "mesh size estimate: %s: %.0f cells from %s, %zu meshed\n", file.c_str(),
                        estimate.cells, estimate.basis.c_str(), cells);
-        }
-    }
-
-    // A boundary group with a face between two meshed regions of the body (a surface gmsh glued
-    // into both volumes) cannot carry a boundary id: deal.II stops on it with a stack trace.
-    void refuse_interior_boundaries(const std::string &file, const MeshedGeometry &result)
-    {
-      const int        dim = result.dimension;
-      std::set<int>    body;
-      std::vector<int> entities;
-      for (const auto &[name, tag] : result.material_ids)
-        {
-          gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-          body.insert(entities.begin(), entities.end());
-        }
-      for (const auto &[name, tag] : result.boundary_ids)
-        {
-          gmsh::model::getEntitiesForPhysicalGroup(dim - 1, tag, entities);
-          for (const int entity : entities)
-            {
-              std::vector<int> upward, downward;
-              gmsh::model::getAdjacencies(dim - 1, entity, upward, downward);
-              std::vector<int> sides;
-              for (const int region : upward)
-                if (body.count(region))
-                  sides.push_back(region);
-              if (sides.size() >= 2)
-                throw std::runtime_error(
-                  "geometry file '" + file + "': boundary group '" + name + "' holds " +
-                  (dim == 3 ? "surface " : "curve ") + std::to_string(entity) + ", which lies inside the body (between " +
-                  (dim == 3 ? "volumes " : "surfaces ") + std::to_string(sides[0]) + " and " + std::to_string(sides[1]) +
-                  "); boundary conditions and loads act on the outer boundary only: take it out of the group");
-            }
         }
     }
 
