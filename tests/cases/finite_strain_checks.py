@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks of the nonlinear (finite-strain) analysis that need more than one run or a failing run.
 
-    finite_strain_checks.py small_load | cutback | stop | locking | snap | matrix_free | plane_stress_pressure
+    finite_strain_checks.py small_load | cutback | stop | locking | snap | matrix_free | secant_fallback | plane_stress_pressure
                             | tpu_flexure | tpu_flexure_slender | mixed_units
 """
 import csv
@@ -154,6 +154,31 @@ elif mode == "matrix_free":
         if "3D" in title:
             readme_figure(qd["newton_iterations"], "28", "%s: MUMPS's Newton iterations" % title)
             readme_figure(per_step, "9.6", "%s: CG iterations per Newton step" % title)
+elif mode == "secant_fallback":
+    # A load step starts from the secant through the last two converged states; if Newton fails
+    # from there it starts again from the last state. Stretched 1000 times (a test hook), the
+    # secant inverts elements on every step after the first: each such step falls back, says so,
+    # counts the failed attempt's iterations, and the path ends where the plain one does (both
+    # converge to Newton's tolerance: 1e-9 relative, measured 1.8e-12; 56 Newton iterations against 31).
+    case = os.path.join(cases, "verification", "elastica_tip_load.prm")
+    plain = run_case(case)["quantities"]
+    out = tempfile.mkdtemp(prefix="compliant-secant-")
+    env = dict(mpi_env(), COMPLIANT_TEST_SECANT_STRETCH="1000")
+    proc = subprocess.run(["mpirun", "-np", "2", solver_path(), case, "--set", "Output/Directory=" + out,
+                           "--set", "Output/Fields=false"], capture_output=True, text=True, env=env)
+    check(proc.returncode == 0, "the path with a failing predictor ends (exit %d: %s)" % (proc.returncode, proc.stderr[-300:]))
+    with open(os.path.join(out, "summary.json")) as f:
+        stretched = json.load(f)["quantities"]
+    fallbacks = proc.stdout.count("Newton from the secant predictor failed")
+    print("fallbacks %d over %d steps; Newton %d (plain %d)" % (fallbacks, stretched["load_steps"],
+                                                               stretched["newton_iterations"], plain["newton_iterations"]))
+    check(fallbacks == stretched["load_steps"] - 1, "every step after the first fell back to the last state")
+    check(stretched["newton_iterations"] > plain["newton_iterations"], "the failed attempts' iterations are counted")
+    for key in ("displacement_tip_x", "displacement_tip_y"):
+        difference = abs(stretched[key] - plain[key]) / abs(plain[key])
+        print("%-20s plain %.12g  after fallbacks %.12g  (%.1e)" % (key, plain[key], stretched[key], difference))
+        check(difference <= 1e-9, "%s the same after the fallbacks (1e-9)" % key)
+    subprocess.run(["rm", "-rf", out])
 elif mode == "plane_stress_pressure":
     # Follower pressure in plane stress: the loaded edge times the thickness stretch. Small
     # pressure: Lame's plane-stress solution (u(a) = p a^2/(E (b^2-a^2)) ((1-nu) a + (1+nu) b^2/a));
@@ -229,6 +254,6 @@ elif mode == "mixed_units":
             check(abs(a[key] - b[key]) <= 1e-8 * abs(a[key]), "s = %g: %s the same to 1e-8 (%.1e)"
                   % (s_, key, abs(a[key] - b[key]) / abs(a[key])))
 else:
-    unknown_mode(mode, ("small_load", "cutback", "stop", "locking", "snap", "matrix_free", "plane_stress_pressure", "mixed_units",
+    unknown_mode(mode, ("small_load", "cutback", "stop", "locking", "snap", "matrix_free", "secant_fallback", "plane_stress_pressure", "mixed_units",
                         "tpu_flexure", "tpu_flexure_slender"))
 finish()

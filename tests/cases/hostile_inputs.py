@@ -32,8 +32,8 @@ modal = os.path.join(root, "cases", "verification", "modal_cantilever_3d.prm")
 scratch = tempfile.mkdtemp(prefix="compliant-hostile-")
 outcomes = {}
 failed = []
-# The README's census of the corpus: 134 inputs.
-README_CENSUS = {"refused with exit 2": 122, "tool errors with exit 1": 6, "must work": 5, "rank failing alone": 1}
+# The README's census of the corpus: 135 inputs.
+README_CENSUS = {"refused with exit 2": 123, "tool errors with exit 1": 6, "must work": 5, "rank failing alone": 1}
 census = {}
 KIND = {0: "must work", 1: "tool errors with exit 1", 2: "refused with exit 2"}
 DUMP_SIGNS = ("Stacktrace", "terminate called", "Aborted", "Segmentation", "core dumped",
@@ -495,6 +495,16 @@ solver_case("a boundary group inside the body in a plain MSH 2.2 file (no topolo
                           "\nend\nsubsection Material\n  set Materials = *: steel\nend\n"
                           "subsection Boundary conditions\n  set Clamped = left\nend\n")],
             ["two_hex.prm", "Mesh file", "boundary group 'joint'", "inside the body", "shared by two cells"])
+# In 2D the same by element edges: two quadrilaterals, a physical curve on the edge they share.
+two_quad = scratch_file("two_quad.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n2 1 \"body\"\n"
+                        "1 2 \"left\"\n1 3 \"joint\"\n$EndPhysicalNames\n$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 2 0 0\n"
+                        "4 0 1 0\n5 1 1 0\n6 2 1 0\n$EndNodes\n$Elements\n4\n1 1 2 2 1 1 4\n2 1 2 3 2 2 5\n"
+                        "3 3 2 1 3 1 2 5 4\n4 3 2 1 4 2 3 6 5\n$EndElements\n")
+solver_case("a boundary group inside the body in a plain MSH 2.2 file, 2D (element edges)",
+            [scratch_file("two_quad.prm", "set Model = plane stress\nsubsection Geometry\n  set Mesh file = " + two_quad +
+                          "\nend\nsubsection Material\n  set Materials = *: steel\nend\n"
+                          "subsection Boundary conditions\n  set Clamped = left\nend\n")],
+            ["two_quad.prm", "Mesh file", "boundary group 'joint'", "element edges inside the body"])
 solver_case("held without a clamp: some components on each of two faces",
             [cantilever_3d, S, "Boundary conditions/Clamped=", S, "Boundary conditions/Displacement=left: x=0, y=0; right: z=0",
              "--check"], ["is valid"], code=0)

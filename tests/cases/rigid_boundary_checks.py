@@ -81,10 +81,10 @@ elif mode == "small_load":
     check(abs(measured / shortening - 1) < 3e-4, "the end moves in by 1/2 int v'^2 dx to 0.02 %% (README; %+.2e)"
           % (measured / shortening - 1))
 elif mode == "ranks":
-    # The rigid constraint ties nodes that METIS puts on different ranks: 1, 2 and 3 ranks agree,
-    # to round-off carried through Newton's path (measured 2.7e-12; a wrong tie across ranks is
-    # O(1)). Not tighter: Newton stops at 1e-10 of the force scale, and two valid paths (with and
-    # without the secant predictor) end 8e-11 apart.
+    # The rigid constraint ties nodes that METIS puts on different ranks: 1, 2 and 3 ranks agree
+    # to the 12 significant digits summary.json prints (a last-digit difference is 2.7e-12 of the
+    # tip's x, measured with and without the secant predictor at Residual tolerance = 1e-12; a
+    # wrong tie across ranks is O(1)).
     case = os.path.join(cases, "verification", "rollup_rigid_moment.prm")
     sets = ["Boundary conditions/Rigid=right: moment=_pi/2*1000/12/100, force=0.001 0.002"]
     results = [run_case(case, sets, np=n)["quantities"] for n in (1, 2, 3)]

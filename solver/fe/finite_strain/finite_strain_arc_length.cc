@@ -168,8 +168,9 @@ namespace compliant
     return compliant::follow_arc_length<PETScWrappers::MPI::Vector>(
       system, u, lambda, arc_settings,
       [&](const ArcLengthStep &step, const PETScWrappers::MPI::Vector &state) {
-        solution    = state;
-        load_factor = step.load_factor;
+        solution                = state;
+        load_factor             = step.load_factor;
+        secant.load_factor_then = -1; // not a step of solve_to: no secant from here
         on_step(step);
       },
       on_cutback);

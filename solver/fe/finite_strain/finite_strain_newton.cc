@@ -211,30 +211,37 @@ namespace compliant
     newton.line_search_steps  = settings.line_search_steps;
     newton.forcing_max        = newton_forcing_max;
     PETScWrappers::MPI::Vector u(locally_owned_dofs, communicator), du(locally_owned_dofs, communicator);
-    bool         predicted = predict_by_secant(target, u);
+    bool         predicted     = predict_by_secant(target, u);
+    unsigned int wasted_solves = 0; // of a failed attempt from the predictor: counted in the report
     NewtonReport report;
     for (;;)
-      try
-        {
-          if (!predicted)
-            u = solution;
-          FiniteStrainNewtonSystem<dim> system(*this, target);
-          report = newton_solve(system, u, du, newton);
-          break;
-        }
-      catch (const std::runtime_error &e)
-        {
-          // solution is untouched: the converged state of the previous step remains, and so does
-          // its friction state (stick, slip, anchors) rather than the failed Newton's
-          restore_contact_state();
-          newton_factorization.reset();
-          if (predicted)
-            {
-              predicted = false; // the secant overshot (an inverted element, a far state): plain start
-              continue;
-            }
-          throw StepFailure(e.what());
-        }
+      {
+        const unsigned int solves_before = total_linear_solves;
+        try
+          {
+            if (!predicted)
+              u = solution;
+            FiniteStrainNewtonSystem<dim> system(*this, target);
+            report = newton_solve(system, u, du, newton);
+            report.iterations += wasted_solves;
+            break;
+          }
+        catch (const std::runtime_error &e)
+          {
+            // solution is untouched: the converged state of the previous step remains, and so does
+            // its friction state (stick, slip, anchors) rather than the failed Newton's
+            restore_contact_state();
+            newton_factorization.reset();
+            if (!predicted)
+              throw StepFailure(e.what());
+            // The secant overshot (an inverted element, a far state): again from the last state.
+            predicted     = false;
+            wasted_solves = total_linear_solves - solves_before;
+            if (Utilities::MPI::this_mpi_process(communicator) == 0)
+              std::cout << "  step to load factor " << target << ": Newton from the secant predictor failed ("
+                        << e.what() << "), again from the last state" << std::endl;
+          }
+      }
     if (target > load_factor)
       {
         secant.start             = solution;
@@ -258,8 +265,12 @@ namespace compliant
     if (contact || secant.load_factor_then != load_factor || !(target > load_factor) ||
         !(load_factor > secant.load_factor_start))
       return false;
-    const double ratio = (target - load_factor) / (load_factor - secant.load_factor_start);
-    u                  = solution;
+    double ratio = (target - load_factor) / (load_factor - secant.load_factor_start);
+    // A test hook (case.finite_strain_secant_fallback): a secant stretched this many times makes
+    // Newton fail from it, so that the retry from the last state is exercised.
+    if (const char *stretch = std::getenv("COMPLIANT_TEST_SECANT_STRETCH"))
+      ratio *= std::atof(stretch);
+    u = solution;
     u.add(ratio, solution);
     u.add(-ratio, secant.start);
     return true;

@@ -348,7 +348,6 @@ namespace compliant
         throw std::runtime_error("geometry file '" + file + "' has no physical group of dimension " +
                                  std::to_string(result.dimension) +
                                  ": name the body (e.g. Physical Surface(\"body\") = {...};)");
-      refuse_interior_boundaries(file, result);
     }
 
     // Gmsh 2.2 ASCII through a private temporary file; the text is what the ranks share.
@@ -398,6 +397,9 @@ namespace compliant
                                  "(Recombine + Transfinite) or all triangles/tetrahedra");
       // A ready .msh is not estimated but counted.
       check_estimate({static_cast<double>(result.n_cells), "the mesh file"}, limit, file, parameters);
+      // After the count: a mesh beyond the limit is refused before its faces are read.
+      set_contained_stage("checking the boundary groups");
+      refuse_interior_boundaries(file, result);
 
       set_contained_stage("finding the curved boundaries");
       result.curved = find_curved_entities(result.dimension);

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <unordered_set>
 #include <vector>
 
 namespace compliant
@@ -64,14 +65,19 @@ namespace compliant
       return lists;
     }
 
-    // How many cells of the body's entities hold each of `wanted`'s faces (edges in 2D).
+    // How many cells of the body's entities hold each of `wanted`'s faces (edges in 2D). A face
+    // with a corner that is no corner of a wanted face is skipped before any key is made: on a
+    // mesh of 1e6 cells nearly all are.
     void count_cell_faces(const int dim, const std::set<int> &body, std::map<FaceKey, unsigned int> &wanted)
     {
+      std::unordered_set<std::size_t> corners_wanted;
+      for (const auto &[key, n] : wanted)
+        corners_wanted.insert(key.begin(), key.end());
+      FaceKey key;
       for (const int entity : body)
         {
-          std::vector<int>                      types;
-          std::vector<std::vector<std::size_t>> tags, nodes;
-          gmsh::model::mesh::getElements(types, tags, nodes, dim, entity);
+          std::vector<int> types;
+          gmsh::model::mesh::getElementTypes(types, dim, entity);
           for (const int type : types)
             for (const int corners : dim == 2 ? std::vector<int>{2} : std::vector<int>{3, 4})
               {
@@ -82,7 +88,10 @@ namespace compliant
                   gmsh::model::mesh::getElementFaceNodes(type, corners, face_nodes, entity, true);
                 for (std::size_t f = 0; f + corners <= face_nodes.size(); f += corners)
                   {
-                    FaceKey key(face_nodes.begin() + f, face_nodes.begin() + f + corners);
+                    const auto first = face_nodes.begin() + f, last = first + corners;
+                    if (!std::all_of(first, last, [&](const std::size_t node) { return corners_wanted.count(node); }))
+                      continue;
+                    key.assign(first, last);
                     std::sort(key.begin(), key.end());
                     if (const auto found = wanted.find(key); found != wanted.end())
                       ++found->second;
