@@ -45,11 +45,12 @@ namespace
     std::unique_ptr<FiniteStrainProblem<2>> problem;
   };
 
-  FiniteStrainSettings newton_settings(double tolerance, unsigned int max_iterations)
+  FiniteStrainSettings newton_settings(double tolerance, unsigned int max_iterations, bool secant = true)
   {
     FiniteStrainSettings settings;
     settings.residual_tolerance    = tolerance;
     settings.max_newton_iterations = max_iterations;
+    settings.secant_predictor      = secant;
     return settings;
   }
 
@@ -64,10 +65,12 @@ namespace
 
 // From a residual of 1e-4 of the force scale to 1e-12, quadratic convergence needs two more
 // iterations (1e-4 -> 1e-8 -> 1e-16); a tangent wrong by a few percent converges linearly and needs
-// many more. Steps of 0.25 keep every Newton inside its quadratic range.
+// many more. Steps of 0.25 keep every Newton inside its quadratic range from the last state (the
+// secant predictor is off here: on this strip under a dead tip load it starts later steps further
+// away, 6, 7, 9, 8 iterations to 1e-12 against 6, 7, 7, 6).
 TEST(FiniteStrainPath, NewtonConvergesQuadraticallyWithTheConsistentTangent)
 {
-  Strip        loose(newton_settings(1e-4, 25)), tight(newton_settings(1e-12, 25));
+  Strip        loose(newton_settings(1e-4, 25, false)), tight(newton_settings(1e-12, 25, false));
   unsigned int extra = 0;
   for (const double lambda : {0.25, 0.5, 0.75, 1.0})
     {

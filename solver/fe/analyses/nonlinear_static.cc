@@ -69,6 +69,12 @@ namespace compliant
                         "or bifurcation passed) the run stops and reports the load, instead of "
                         "following an unstable path. Off automatically with follower pressure "
                         "and with rigid boundaries in 3D (non-symmetric tangent).");
+      prm.declare_entry("Predictor", "secant", Patterns::Selection("secant|last state"),
+                        "Where Newton starts each load step. secant: on the line through the "
+                        "last two converged states, at the new load factor (fewer Newton "
+                        "iterations on most paths; if Newton fails from there it starts again "
+                        "from the last state, and the failed iterations count); last state: "
+                        "from the last converged state. Not with contact (always the last state).");
       prm.declare_entry("Residual tolerance", "1e-9", Patterns::Double(0, 1),
                         "Newton converges when the residual is below this fraction of the "
                         "internal force norm.");
@@ -335,6 +341,7 @@ namespace compliant
     s.finite_strain.follower_pressure     = prm.get("Follower pressure");
     s.finite_strain.max_newton_iterations = prm.get_integer("Newton iterations");
     s.finite_strain.residual_tolerance    = prm.get_double("Residual tolerance");
+    s.finite_strain.secant_predictor      = prm.get("Predictor") == "secant";
     // A moment on a rigid boundary in 3D makes the tangent unsymmetric too (a space-fixed
     // moment is not conservative under finite rotations).
     s.stepping.stability_check = prm.get_bool("Stability check") && s.finite_strain.follower_pressure.empty() &&

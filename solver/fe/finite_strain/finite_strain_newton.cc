@@ -262,7 +262,7 @@ namespace compliant
   bool FiniteStrainProblem<dim>::predict_by_secant(const double target, PETScWrappers::MPI::Vector &u) const
   {
     // Measured on cases/benchmarks/flexure_finite_strain.prm: see the README (Speed).
-    if (contact || secant.load_factor_then != load_factor || !(target > load_factor) ||
+    if (!settings.secant_predictor || contact || secant.load_factor_then != load_factor || !(target > load_factor) ||
         !(load_factor > secant.load_factor_start))
       return false;
     double ratio = (target - load_factor) / (load_factor - secant.load_factor_start);

@@ -48,6 +48,9 @@ namespace compliant
     unsigned    max_newton_iterations = 25;
     double      residual_tolerance = 1e-9; // relative to the internal force scale
     unsigned    line_search_steps  = 5;
+    // 'Finite strain/Predictor' = secant: a load step forward starts from the secant through the
+    // last two converged states (predict_by_secant); false: from the last converged state.
+    bool        secant_predictor   = true;
     ContactSettings contact; // subsection Contact: rigid obstacles
     // Extra constraints (pins, mirror ties, edge supports): lines on the displacements of the
     // reference configuration (finite_strain_extra_constraints.cc).
