@@ -42,10 +42,17 @@ namespace compliant
         }
     }
 
-    // The elements of entity (dim, tag) by their corner nodes.
-    std::vector<FaceKey> corner_lists(const int dim, const int tag)
+    // A boundary group's element face (edge in 2D) and how many cells of the body hold it.
+    struct FaceUse
     {
-      std::vector<FaceKey>                  lists;
+      const std::string *group;
+      unsigned int       cells = 0;
+    };
+    using FaceUses = std::map<FaceKey, FaceUse>;
+
+    // The elements of entity (dim, tag) of `group`, by their sorted corner nodes, into `uses`.
+    void add_group_faces(const int dim, const int tag, const std::string &group, FaceUses &uses)
+    {
       std::vector<int>                      types;
       std::vector<std::vector<std::size_t>> tags, nodes;
       gmsh::model::mesh::getElements(types, tags, nodes, dim, tag);
@@ -59,16 +66,15 @@ namespace compliant
             {
               FaceKey key(nodes[t].begin() + e * n_nodes, nodes[t].begin() + e * n_nodes + n_corners);
               std::sort(key.begin(), key.end());
-              lists.push_back(key);
+              uses.emplace(std::move(key), FaceUse{&group});
             }
         }
-      return lists;
     }
 
     // How many cells of the body's entities hold each of `wanted`'s faces (edges in 2D). A face
     // with a corner that is no corner of a wanted face is skipped before any key is made: on a
     // mesh of 1e6 cells nearly all are.
-    void count_cell_faces(const int dim, const std::set<int> &body, std::map<FaceKey, unsigned int> &wanted)
+    void count_cell_faces(const int dim, const std::set<int> &body, FaceUses &wanted)
     {
       std::unordered_set<std::size_t> corners_wanted;
       for (const auto &[key, n] : wanted)
@@ -94,7 +100,7 @@ namespace compliant
                     key.assign(first, last);
                     std::sort(key.begin(), key.end());
                     if (const auto found = wanted.find(key); found != wanted.end())
-                      ++found->second;
+                      ++found->second.cells;
                   }
               }
         }
@@ -104,30 +110,25 @@ namespace compliant
     void refuse_by_mesh(const std::string &file, const MeshedGeometry &result, const std::set<int> &body)
     {
       const int                          dim = result.dimension;
-      std::map<FaceKey, unsigned int>    uses;
-      std::map<FaceKey, std::string>     group_of;
-      std::vector<int>                   entities;
+      FaceUses         uses;
+      std::vector<int> entities;
       for (const auto &[name, tag] : result.boundary_ids)
         {
           gmsh::model::getEntitiesForPhysicalGroup(dim - 1, tag, entities);
           for (const int entity : entities)
-            for (auto &key : corner_lists(dim - 1, entity))
-              {
-                group_of.emplace(key, name);
-                uses.emplace(std::move(key), 0);
-              }
+            add_group_faces(dim - 1, entity, name, uses);
         }
       if (uses.empty())
         return;
       count_cell_faces(dim, body, uses);
-      for (const auto &[key, n] : uses)
-        if (n >= 2)
+      for (const auto &[key, use] : uses)
+        if (use.cells >= 2)
           {
             std::vector<double> x, parametric;
             gmsh::model::mesh::getNode(key.front(), x, parametric);
             char where[96];
             std::snprintf(where, sizeof(where), "(%g, %g, %g)", x[0], x[1], x[2]);
-            throw std::runtime_error("geometry file '" + file + "': boundary group '" + group_of.at(key) +
+            throw std::runtime_error("geometry file '" + file + "': boundary group '" + *use.group +
                                      "' holds " + (dim == 3 ? "element faces" : "element edges") +
                                      " inside the body, shared by two cells (one with a corner at " + where +
                                      "); boundary conditions and loads act on the outer boundary only: take "
