@@ -21,6 +21,10 @@ namespace compliant
     // Started without mpirun, one process needs no runtime daemon (orted) beside it: 0.1 s more.
     if (singleton)
       setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+    // Under mpirun, the PMIx client reads the job's data from mpirun by message (hash) instead of
+    // attaching its shared-memory store: MPI_Init 0.036 -> 0.023 s per rank on 2 ranks.
+    else
+      setenv("PMIX_MCA_gds", "hash", 0);
     return setenv("OMPI_MCA_pml", "ob1", 0) == 0;
 #else
     return false;

@@ -8,7 +8,8 @@ namespace compliant
   // the processor in MPI_Init on every start, with or without the hardware. When all ranks run
   // on this one node (a singleton, or mpirun's local size equal to its world size) no fabric is
   // used, so this asks for the ob1 layer (shared memory between ranks) and the probe is skipped.
-  // A process started without mpirun also runs without Open MPI's daemon (it spawns nothing).
+  // A process started without mpirun also runs without Open MPI's daemon (it spawns nothing);
+  // under mpirun the PMIx client takes its job data by message, not from a shared-memory store.
   // A user's own OMPI_MCA_pml wins; runs across nodes are left to Open MPI; other MPIs are not
   // touched. Every rank sees the same environment, so all ranks choose alike.
   // Returns true where it set the layer.
