@@ -22,7 +22,7 @@ namespace compliant
     if (singleton)
       setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
     // Under mpirun, the PMIx client reads the job's data from mpirun by message (hash) instead of
-    // attaching its shared-memory store: MPI_Init 0.036 -> 0.023 s per rank on 2 ranks.
+    // attaching its shared-memory store: MPI_Init 0.036 -> 0.027 s per rank on 2 ranks.
     else
       setenv("PMIX_MCA_gds", "hash", 0);
     return setenv("OMPI_MCA_pml", "ob1", 0) == 0;

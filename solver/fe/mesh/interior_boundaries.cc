@@ -66,7 +66,7 @@ namespace compliant
             {
               FaceKey key(nodes[t].begin() + e * n_nodes, nodes[t].begin() + e * n_nodes + n_corners);
               std::sort(key.begin(), key.end());
-              uses.emplace(std::move(key), FaceUse{&group});
+              uses.try_emplace(std::move(key), FaceUse{&group});
             }
         }
     }
