@@ -3,10 +3,10 @@
 
 Debian's deal.II loads about 200 shared libraries (Trilinos, PETSc, OpenCASCADE through gmsh, ...).
 The dynamic loader resolves each of their ~330k symbol references by walking the global scope
-(the executable, then its libraries breadth-first) until one defines the symbol: on average 38
-libraries deep with the order the linker leaves, 0.1 s of every process start on this machine.
-Naming the libraries in the executable in order of how many references they resolve makes the
-walk ~3 times shorter.
+(the executable, then its libraries breadth-first) until one defines the symbol: on average 32
+libraries deep with the order the linker leaves, most of `compliant --help`'s 0.4-0.5 s. Naming the
+libraries in the executable in order of how many references they resolve, as far as the rule
+below allows, makes it 24 deep and the start about 0.06 s shorter (README, Speed).
 
 A symbol defined by several libraries binds to the first in the scope, so reordering could change
 which definition wins (BLAS routines in libblas.so.3 and libopenblas.so.0, copysign in libm and
@@ -97,7 +97,7 @@ def interchangeable(symbol, definitions):
 
 
 def ordered(scope, counts):
-    """Libraries most referenced first, each winner ahead of the other definers of its symbols."""
+    """Libraries most referenced first, each definer of a symbol in its place among the others."""
     libraries = scope[1:]  # the executable stays first
     definers = collections.defaultdict(list)  # symbol -> its definers in scope order
     definitions = collections.defaultdict(list)
@@ -114,7 +114,7 @@ def ordered(scope, counts):
             for earlier, later in zip(libs, libs[1:]):
                 must_follow[earlier].add(later)
     waiting = collections.Counter()
-    for winner, later in must_follow.items():
+    for earlier, later in must_follow.items():
         for library in later:
             waiting[library] += 1
     position = {library: i for i, library in enumerate(libraries)}
