@@ -170,6 +170,7 @@ namespace compliant
                                     std::min(parameters.solver_max_iterations, 300u) :
                                     parameters.solver_max_iterations;
     settings.petsc_options      = parameters.petsc_options;
+    settings.long_edge_space    = parameters.long_edge_coarse_space;
     settings.reused_degree_one_level = reused_degree_one_level;
     if (warm_start.size() > 0)
       settings.eigenvalue_iterations = 8; // a few iterations from a close guess
@@ -215,7 +216,7 @@ namespace compliant
       std::ostringstream note;
       note << "largest cell aspect ratio " << std::setprecision(3) << s.largest_aspect_ratio
            << ": Chebyshev degree " << s.smoothing_degree << " over range " << s.smoothing_range
-           << ", degree-1 level by " << (s.coarse_direct ? "MUMPS" : "GAMG") << ", kernels on "
+           << ", " << fast_solver::coarse_level_note(s) << ", kernels on "
            << fast_solver::simd_lanes<double> << " SIMD lane" << (fast_solver::simd_lanes<double> > 1 ? "s" : "")
            << (s.lower_reused ? "; levels of degree <= p, their smoothers and the degree-1 level the degree-p model's" :
                s.coarse_reused ? ", the degree-p model's" : "");

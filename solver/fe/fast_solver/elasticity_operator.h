@@ -34,6 +34,7 @@ namespace compliant::fast_solver
     void add_kernel_diagonal(VectorType &diagonal) const override;
     void add_unconstrained_diagonal(VectorType &diagonal) const override;
     void add_kernel_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix) const override;
+    void add_kernel_subspace_matrix(const LongEdgeSpace &space, Mat matrix) const override;
 
     // Per cell batch: the Lame parameters of each lane's cell.
     std::vector<SimdArray<Number>> lambda, mu;

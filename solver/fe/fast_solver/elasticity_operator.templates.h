@@ -11,6 +11,7 @@
 
 #include "discretization/reduced_integration.h"
 #include "fast_solver/integration_rules.h"
+#include "fast_solver/subspace_matrix.h"
 
 #include <stdexcept>
 
@@ -95,6 +96,17 @@ namespace compliant::fast_solver
             stress_at_quadrature_points(phi, lambda[cell], mu[cell]);
           },
           0, quad);
+      }
+
+      // Adds this rule's share of the long-edge space's Galerkin matrix.
+      void subspace_matrix(const MatrixFree<dim, Number, SimdArray<Number>> &data, const LongEdgeSpace &space,
+                           Mat matrix, const std::vector<SimdArray<Number>> &lambda,
+                           const std::vector<SimdArray<Number>> &mu) const
+      {
+        add_subspace_matrix<dim, degree, n_q, Number>(data, quad, space, matrix, [&](Evaluation &phi) {
+          const unsigned int cell = phi.get_current_cell_index();
+          stress_at_quadrature_points(phi, lambda[cell], mu[cell]);
+        });
       }
     };
   } // namespace
@@ -181,6 +193,14 @@ namespace compliant::fast_solver
   {
     for_each_rule<Kernel, dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
       kernel.matrix(*this->data, *this->constraints, matrix, lambda, mu);
+    });
+  }
+
+  template <int dim, typename Number>
+  void ElasticityOperator<dim, Number>::add_kernel_subspace_matrix(const LongEdgeSpace &space, Mat matrix) const
+  {
+    for_each_rule<Kernel, dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+      kernel.subspace_matrix(*this->data, space, matrix, lambda, mu);
     });
   }
 } // namespace compliant::fast_solver

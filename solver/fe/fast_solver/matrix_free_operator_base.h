@@ -13,6 +13,8 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/matrix_free/matrix_free.h>
 
+#include <petscmat.h>
+
 #include <memory>
 #include <vector>
 
@@ -23,6 +25,8 @@ namespace dealii::PETScWrappers::MPI
 
 namespace compliant::fast_solver
 {
+  struct LongEdgeSpace; // fast_solver/long_edge_space.h
+
   template <int dim, typename Number>
   class MatrixFreeOperatorBase : public dealii::Subscriptor
   {
@@ -50,6 +54,10 @@ namespace compliant::fast_solver
     void compute_inverse_diagonal(VectorType &inverse_diagonal) const;
     // The assembled matrix with unit diagonal on constrained rows (for the coarse level).
     void compute_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix, MPI_Comm communicator) const;
+
+    // Adds the Galerkin matrix P^T K P of the long-edge space (degree 2 only) to `matrix`, laid
+    // out in the space's coarse numbering; the caller assembles it.
+    virtual void add_kernel_subspace_matrix(const LongEdgeSpace &space, Mat matrix) const = 0;
 
     dealii::types::global_dof_index m() const;
     dealii::types::global_dof_index n() const { return m(); }

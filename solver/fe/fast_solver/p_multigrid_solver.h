@@ -12,6 +12,13 @@
 // factored by MUMPS while it is small. Measured on cases/benchmarks/leaf_torsion.prm (90k DoFs,
 // a = 8): fixed degree 4 / range 20 with GAMG took 91 iterations and 6.8 s, the sized smoother
 // with MUMPS 30 iterations and 2.7 s.
+//
+// Those modes are bending along the long cells, which degree 1 locks on: Q1 is the Galerkin
+// coarse space of Q2, but it does not contain them. Where cells are long (a > 3), the level below
+// degree 2 is therefore the long-edge space instead (fast_solver/long_edge_space.h: quadratic
+// along each cell's long edges, linear across, factored by MUMPS), which does; the smoother keeps
+// the degree and range of cubes (4 over 20). Torsion bar on 12:1 cells, 63k DoFs: 12 iterations and
+// 0.50 s of solve against the sized smoother's 34 and 1.08 s (cases/benchmarks/long_edge_speed.md).
 #pragma once
 
 #include <deal.II/dofs/dof_handler.h>
@@ -51,6 +58,16 @@ namespace compliant::fast_solver
     enum class Coarse { automatic, amg, direct } coarse = Coarse::automatic;
     double       direct_coarse_limit    = 250000;
     double       direct_coarse_limit_3d = 150000;
+    // Long cells (aspect ratio > long_edge_aspect_ratio), degree >= 2, coarse level not amg, no
+    // hanging nodes: below the degree-2 level the long-edge space (fast_solver/long_edge_space.h)
+    // replaces the degree-1 level, factored by MUMPS while within the limits above, and the
+    // smoother keeps the degree and range of cubes. On the 12:1 torsion bar (63k DoFs) the outer
+    // iterations went from 34 (degree 1 factored, Chebyshev 16 over 400) to 12 (4 over 20).
+    bool         long_edge_space              = true;
+    double       long_edge_aspect_ratio       = 3;
+    unsigned int long_edge_smoothing_degree   = 4;
+    double       long_edge_smoothing_range    = 20;
+    double       long_edge_factor_bytes_per_dof = 28e3;
     // AMG: 0 = one V-cycle; > 0 = CG + AMG to this residual reduction, and the outer CG becomes
     // flexible (the preconditioner then varies from one application to the next).
     double       coarse_tolerance   = 0.03;
@@ -94,8 +111,13 @@ namespace compliant::fast_solver
     bool                                 coarse_direct    = false;
     bool                                 coarse_reused    = false; // settings' degree-1 level used
     bool                                 lower_reused     = false; // a degree-p solver's V-cycle below
+    dealii::types::global_dof_index      long_edge_dofs   = 0;     // the long-edge space's, 0 if not used
     std::vector<dealii::types::global_dof_index> level_dofs; // coarse to fine
   };
+
+  // The lowest level in words, for the log: "degree-1 level by MUMPS" or "... GAMG", or
+  // "long-edge space (N DoFs) by MUMPS".
+  std::string coarse_level_note(const PMultigridStatistics &statistics);
 
   // Operator: ElasticityOperator<dim, double> or TangentOperator<dim, double> (instantiated in
   // p_multigrid_solver.cc and p_multigrid_tangent.cc).
@@ -161,6 +183,8 @@ namespace compliant::fast_solver
     // Levels 0 (the lower solver's finest) and 1 (fine_dofs); false if lower does not fit.
     bool build_on_lower(const dealii::DoFHandler<dim> &fine_dofs, const LevelConstraints &level_constraints,
                         const LevelSetup &level_setup, std::shared_ptr<const PMultigridSolver> lower);
+    // Builds the long-edge space on the degree-2 level where it pays and fits; true if it does.
+    bool choose_long_edge_space(double aspect_ratio, double memory);
     // The transfers between the levels (fast_solver/level_transfer.h).
     void build_transfer();
     // The V-cycle's objects over the current levels, smoother and coarse solve.

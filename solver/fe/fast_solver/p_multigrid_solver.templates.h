@@ -25,6 +25,7 @@
 #include "discretization/dof_fingerprint.h"
 #include "fast_solver/coarse_level_solver.h"
 #include "fast_solver/level_transfer.h"
+#include "fast_solver/long_edge_coarse_solver.h"
 #include "mesh/cell_aspect_ratio.h"
 #include "mesh/memory_estimate.h"
 #include "linear_algebra/rigid_body_modes.h"
@@ -66,17 +67,24 @@ namespace compliant::fast_solver
     std::unique_ptr<mg::Matrix<VectorType>>        mg_matrix;
     std::unique_ptr<Multigrid<VectorType>>         multigrid;
     std::unique_ptr<PreconditionMG<dim, VectorType, TransferType>> preconditioner;
+    // On long cells: the long-edge space below the degree-2 level (level 1), which is then the
+    // lowest level the V-cycle visits; level 0 is built but not used.
+    std::shared_ptr<const LongEdgeSpace>           long_edges;
+    std::unique_ptr<LongEdgeCoarseSolver<dim>>     long_edge_solve;
 
     const MGCoarseGridBase<VectorType> &coarse_solve() const
     {
       if (lower_cycle.lower)
         return lower_cycle;
+      if (long_edge_solve)
+        return *long_edge_solve;
       return *coarse->solver;
     }
     // Inner iterations of the degree-1 solver, this solver's or the lower one's.
     unsigned int coarse_inner_iterations() const
     {
       return lower_cycle.lower ? lower_cycle.lower->levels->coarse_inner_iterations() :
+             long_edge_solve   ? long_edge_solve->solves() :
                                  coarse->solver->inner_iterations();
     }
   };
@@ -183,11 +191,6 @@ namespace compliant::fast_solver
 
     stats.largest_aspect_ratio = largest_cell_aspect_ratio(fine_dofs.get_triangulation(), communicator);
     const double a             = stats.largest_aspect_ratio;
-    stats.smoothing_range      = settings.smoothing_range > 0 ? settings.smoothing_range :
-                                                                std::clamp(3 * a * a, 20.0, 400.0);
-    stats.smoothing_degree     = settings.smoothing_degree > 0 ?
-                                   settings.smoothing_degree :
-                                   std::clamp<unsigned int>(std::lround(std::sqrt(stats.smoothing_range)) - 1, 4, 16);
     // A 3D factor takes about 14 kB per degree-1 DoF over all ranks (measured at 63k-203k DoFs):
     // MUMPS only where that leaves half the available memory to the rest.
     const double n_coarse      = L.dofs[0]->n_dofs();
@@ -198,12 +201,48 @@ namespace compliant::fast_solver
                            n_coarse <= (dim == 3 ? settings.direct_coarse_limit_3d : settings.direct_coarse_limit));
     if (stats.coarse_reused)
       L.coarse = reused, stats.coarse_direct = reused->direct;
+    else if (choose_long_edge_space(a, memory))
+      stats.coarse_direct = true;
     else
       coarse_rigid_body_modes = rigid_body_modes(mapping, *L.dofs[0], communicator);
+    // Without the long-edge space, the diagonal has to damp the long cells' smooth modes: a wider
+    // range with a higher polynomial, both from the aspect ratio a. With it, the range of cubes.
+    const bool long_edges  = L.long_edges != nullptr;
+    stats.smoothing_range  = settings.smoothing_range > 0 ? settings.smoothing_range :
+                             long_edges                   ? settings.long_edge_smoothing_range :
+                                                            std::clamp(3 * a * a, 20.0, 400.0);
+    stats.smoothing_degree = settings.smoothing_degree > 0 ? settings.smoothing_degree :
+                             long_edges ? settings.long_edge_smoothing_degree :
+                                          std::clamp<unsigned int>(std::lround(std::sqrt(stats.smoothing_range)) - 1, 4, 16);
     build_smoother_and_coarse_solver(fingerprint);
     stats.setup_seconds = timer.wall_time();
   }
 
+
+  template <int dim, typename Operator>
+  bool PMultigridSolver<dim, Operator>::choose_long_edge_space(const double aspect_ratio, const double memory)
+  {
+    auto &L = *levels;
+    // Asked for GAMG: no factor. Asked for a factor (direct): the long-edge space's is one.
+    if (!settings.long_edge_space || settings.coarse == PMultigridSettings::Coarse::amg ||
+        L.operators.max_level() < 1 || aspect_ratio <= settings.long_edge_aspect_ratio || stats.coarse_reused)
+      return false;
+    // Hanging nodes and ties: the space's blend does not follow them.
+    bool entries = false;
+    for (const auto &line : L.constraints[1].get_lines())
+      entries = entries || !line.entries.empty();
+    if (Utilities::MPI::logical_or(entries, communicator))
+      return false;
+    auto space = std::make_shared<LongEdgeSpace>();
+    build_long_edge_space(*L.dofs[1], L.constraints[1], settings.long_edge_aspect_ratio, *space);
+    const double n    = space->n_coarse;
+    const bool   fits = dim < 3 || memory <= 0 || settings.long_edge_factor_bytes_per_dof * n <= 0.5 * memory;
+    if (!fits || n > (dim == 3 ? settings.direct_coarse_limit_3d : settings.direct_coarse_limit))
+      return false;
+    stats.long_edge_dofs = space->n_coarse;
+    L.long_edges         = std::move(space);
+    return true;
+  }
 
   template <int dim, typename Operator>
   bool PMultigridSolver<dim, Operator>::build_on_lower(const DoFHandler<dim>                  &fine_dofs,
@@ -278,6 +317,7 @@ namespace compliant::fast_solver
         auto &data          = smoother_data[level];
         data.preconditioner = std::make_shared<DiagonalMatrix<typename Levels::VectorType>>();
         // Level 0 is solved by the coarse solve, never smoothed: its diagonal only gives the size.
+        // (With the long-edge space level 1 is the lowest, smoothed inside its coarse solve.)
         if (level == 0)
           L.operators[level]->initialize_dof_vector(data.preconditioner->get_vector());
         else
@@ -292,6 +332,15 @@ namespace compliant::fast_solver
 
     if (stats.coarse_reused)
       return build_preconditioner();
+    if (L.long_edges)
+      {
+        if (L.long_edge_solve)
+          L.long_edge_solve->refactor();
+        else
+          L.long_edge_solve = std::make_unique<LongEdgeCoarseSolver<dim>>(*L.operators[1], L.smoother, L.long_edges,
+                                                                           communicator);
+        return build_preconditioner();
+      }
     // A new level every time: a solver that reused this one keeps the old.
     auto coarse = std::make_shared<DegreeOneLevel>();
     L.operators[0]->compute_matrix(coarse->matrix, communicator);
@@ -314,7 +363,7 @@ namespace compliant::fast_solver
     L.multigrid.reset();
     L.mg_matrix  = std::make_unique<mg::Matrix<VectorType>>(L.operators);
     L.multigrid  = std::make_unique<Multigrid<VectorType>>(*L.mg_matrix, L.coarse_solve(), *L.transfer, L.smoother,
-                                                          L.smoother, 0, top);
+                                                          L.smoother, L.long_edge_solve ? 1 : 0, top);
     L.preconditioner = std::make_unique<PreconditionMG<dim, VectorType, typename Levels::TransferType>>(
       *L.dofs[top], *L.multigrid, *L.transfer);
   }

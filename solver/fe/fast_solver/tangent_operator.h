@@ -68,6 +68,7 @@ namespace compliant::fast_solver
     // Exact without hanging nodes or ties.
     void add_unconstrained_diagonal(VectorType &diagonal) const override;
     void add_kernel_matrix(dealii::PETScWrappers::MPI::SparseMatrix &matrix) const override;
+    void add_kernel_subspace_matrix(const LongEdgeSpace &space, Mat matrix) const override;
 
     // The state at rule r's points (0: p + 1 per direction, 1: p with reduced integration):
     // batch * n_q_points[r] + q.

@@ -3,6 +3,7 @@
 
 #include "fast_solver/tangent_operator.h"
 #include "fast_solver/integration_rules.h"
+#include "fast_solver/subspace_matrix.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -83,6 +84,15 @@ namespace compliant::fast_solver
           data, constraints, matrix,
           [&](Evaluation &phi) { at_quadrature_points(phi, &state[phi.get_current_cell_index() * phi.n_q_points]); },
           0, quad);
+      }
+
+      // Adds this rule's share of the long-edge space's Galerkin matrix.
+      void subspace_matrix(const MatrixFree<dim, Number, SimdArray<Number>> &data, const LongEdgeSpace &space,
+                           Mat matrix, const AlignedVector<State> &state) const
+      {
+        add_subspace_matrix<dim, degree, n_q, Number>(data, quad, space, matrix, [&](Evaluation &phi) {
+          at_quadrature_points(phi, &state[phi.get_current_cell_index() * phi.n_q_points]);
+        });
       }
     };
   } // namespace tangent_detail
@@ -246,6 +256,14 @@ namespace compliant::fast_solver
   {
     for_each_rule<tangent_detail::Kernel, dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
       kernel.matrix(*this->data, *this->constraints, matrix, state[kernel.quad]);
+    });
+  }
+
+  template <int dim, typename Number>
+  void TangentOperator<dim, Number>::add_kernel_subspace_matrix(const LongEdgeSpace &space, Mat matrix) const
+  {
+    for_each_rule<tangent_detail::Kernel, dim, Number>(this->fe_degree, reduced, hourglass, [&](const auto &kernel) {
+      kernel.subspace_matrix(*this->data, space, matrix, state[kernel.quad]);
     });
   }
 } // namespace compliant::fast_solver

@@ -156,6 +156,7 @@ namespace compliant
         fast_solver::PMultigridSettings settings;
         settings.max_iterations     = 300;
         settings.petsc_options      = parameters.petsc_options;
+        settings.long_edge_space    = parameters.long_edge_coarse_space;
         // The tangent turns with the structure, so the reference rigid-body modes GAMG would be
         // given are only approximate: factor the degree-1 level while it is small.
         if (dim * n_global_vertices(triangulation) <=
@@ -181,8 +182,8 @@ namespace compliant
         if (Utilities::MPI::this_mpi_process(communicator) == 0)
           std::cout << "Linear solver: matrix-free p-multigrid on the tangent (largest cell aspect "
                     << "ratio " << std::setprecision(3) << s.largest_aspect_ratio << ": Chebyshev degree "
-                    << s.smoothing_degree << " over range " << s.smoothing_range << ", degree-1 level by "
-                    << (s.coarse_direct ? "MUMPS" : "GAMG") << ")" << std::setprecision(6) << std::endl;
+                    << s.smoothing_degree << " over range " << s.smoothing_range << ", "
+                    << fast_solver::coarse_level_note(s) << ")" << std::setprecision(6) << std::endl;
       }
     else if (preconditioner_stale)
       tangent_multigrid->update(set_state);

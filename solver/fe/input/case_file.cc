@@ -375,6 +375,7 @@ namespace compliant
     p.solver_tolerance      = prm.get_double("Relative tolerance");
     p.solver_max_iterations = prm.get_integer("Maximum iterations");
     p.petsc_options         = prm.get("PETSc options");
+    p.long_edge_coarse_space = prm.get("Coarse space") == "auto";
     prm.leave_subsection();
 
     prm.enter_subsection("Quantities");

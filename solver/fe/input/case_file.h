@@ -83,6 +83,7 @@ namespace compliant
     double      solver_tolerance = 1e-10;
     unsigned    solver_max_iterations = 1000;
     std::string petsc_options;
+    bool        long_edge_coarse_space = true; // Linear solver/Coarse space = auto
 
     std::string points, reactions, mean_displacements, rotations, derived;
     std::string region_maxima; // bodies whose peak strain and stress are reported

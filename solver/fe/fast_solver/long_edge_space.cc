@@ -1,0 +1,271 @@
+#include "fast_solver/long_edge_space.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_accessor.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace compliant::fast_solver
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void check(const PetscErrorCode ierr, const char *what)
+    {
+      if (ierr != 0)
+        throw std::runtime_error(std::string("long-edge coarse space: PETSc error in ") + what);
+    }
+
+    // The degree-2 nodes of the reference cell: which directions each is a midpoint in, and its
+    // Boolean-sum blend from the nodes with one midpoint direction fewer and below.
+    template <int dim>
+    struct ReferenceNodes
+    {
+      std::vector<unsigned int>                                  mid_mask;
+      std::vector<std::vector<std::pair<unsigned int, double>>>  blend;
+      std::vector<unsigned int>                                  by_mid_count; // node order, vertices first
+
+      explicit ReferenceNodes(const FiniteElement<dim> &scalar_q2)
+      {
+        const auto        &points = scalar_q2.get_unit_support_points();
+        const unsigned int n      = points.size();
+        std::vector<unsigned int> code(n), node_of_code(std::pow(3, dim), n);
+        mid_mask.assign(n, 0);
+        for (unsigned int b = 0; b < n; ++b)
+          {
+            unsigned int c = 0, stride = 1;
+            for (unsigned int d = 0; d < dim; ++d, stride *= 3)
+              {
+                const unsigned int t = std::lround(2 * points[b][d]); // 0, 1 (midpoint), 2
+                c += t * stride;
+                if (t == 1)
+                  mid_mask[b] |= 1u << d;
+              }
+            code[b]              = c;
+            node_of_code[c]      = b;
+          }
+        // value(b) = sum over the nodes that keep b's coordinate where b is not a midpoint, are at
+        // the midpoint in j of b's k midpoint directions and at 0 or 1 in the others (j < k), of
+        // (-1)^(k-1-j) 2^(j-k) times their value.
+        blend.resize(n);
+        for (unsigned int b = 0; b < n; ++b)
+          {
+            const unsigned int k = __builtin_popcount(mid_mask[b]);
+            for (unsigned int other = 0; other < n; ++other)
+              {
+                if ((mid_mask[other] & ~mid_mask[b]) != 0 || other == b)
+                  continue;
+                bool same = true;
+                for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
+                  if (!(mid_mask[b] & (1u << d)) && (code[other] / stride) % 3 != (code[b] / stride) % 3)
+                    same = false;
+                if (!same)
+                  continue;
+                const unsigned int j = __builtin_popcount(mid_mask[other]);
+                blend[b].emplace_back(other, ((k - 1 - j) % 2 ? -1. : 1.) * std::pow(0.5, k - j));
+              }
+          }
+        by_mid_count.resize(n);
+        for (unsigned int b = 0; b < n; ++b)
+          by_mid_count[b] = b;
+        std::stable_sort(by_mid_count.begin(), by_mid_count.end(), [&](unsigned int a, unsigned int b) {
+          return __builtin_popcount(mid_mask[a]) < __builtin_popcount(mid_mask[b]);
+        });
+      }
+    };
+
+    // The directions in which a cell is at least `threshold` times longer than in its shortest
+    // one, from the mean length of its edges in each direction.
+    template <int dim, typename Cell>
+    unsigned int long_directions(const Cell &cell, const double threshold)
+    {
+      std::array<double, dim> extent{};
+      for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int v = 0; v < (1u << dim); ++v)
+          if (!(v & (1u << d)))
+            extent[d] += cell->vertex(v).distance(cell->vertex(v | (1u << d)));
+      const double shortest = *std::min_element(extent.begin(), extent.end());
+      unsigned int mask     = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (extent[d] >= threshold * shortest)
+          mask |= 1u << d;
+      return mask;
+    }
+  } // namespace
+
+  LongEdgeSpace::~LongEdgeSpace()
+  {
+    if (prolongation)
+      MatDestroy(&prolongation);
+  }
+
+  template <int dim>
+  void build_long_edge_space(const DoFHandler<dim> &dofs, const AffineConstraints<double> &constraints,
+                             const double aspect_threshold, LongEdgeSpace &space)
+  {
+    const auto &fe = dofs.get_fe();
+    if (fe.n_base_elements() != 1 || fe.base_element(0).degree != 2 || fe.n_components() != dim)
+      throw std::logic_error("long-edge coarse space: needs dim components of FE_Q(2)");
+    const ReferenceNodes<dim> reference(fe.base_element(0));
+    const unsigned int        n_nodes = reference.mid_mask.size();
+    const MPI_Comm            comm    = dofs.get_communicator();
+
+    // The midpoints of long edges, by the DoF of their first component: from every cell this
+    // rank sees, so that each edge of an owned cell has all its cells' verdicts.
+    std::unordered_set<types::global_dof_index> long_edge_nodes;
+    std::vector<types::global_dof_index>         cell_dofs(fe.n_dofs_per_cell());
+    const auto dof_of = [&](unsigned int component, unsigned int node) {
+      return cell_dofs[fe.component_to_system_index(component, node)];
+    };
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          const unsigned int mask = long_directions<dim>(cell, aspect_threshold);
+          if (mask == 0)
+            continue;
+          cell->get_dof_indices(cell_dofs);
+          for (unsigned int b = 0; b < n_nodes; ++b)
+            if (reference.mid_mask[b] != 0 && (reference.mid_mask[b] & ~mask) == 0)
+              long_edge_nodes.insert(dof_of(0, b));
+        }
+    const auto is_free_node = [&](unsigned int b) {
+      const unsigned int k = __builtin_popcount(reference.mid_mask[b]);
+      return k == 0 || long_edge_nodes.count(dof_of(0, b)) > 0;
+    };
+
+    // Coarse numbering: the owned free DoFs not held at zero, in order, after the lower ranks'.
+    const IndexSet &owned = dofs.locally_owned_dofs();
+    IndexSet        relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    std::vector<types::global_dof_index> owned_coarse;
+    types::global_dof_index              owned_long_edges = 0;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(cell_dofs);
+          for (unsigned int b = 0; b < n_nodes; ++b)
+            if (is_free_node(b))
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const auto g = dof_of(c, b);
+                  if (owned.is_element(g) && !constraints.is_constrained(g))
+                    owned_coarse.push_back(g);
+                }
+        }
+    std::sort(owned_coarse.begin(), owned_coarse.end());
+    owned_coarse.erase(std::unique(owned_coarse.begin(), owned_coarse.end()), owned_coarse.end());
+    for (const auto &g : long_edge_nodes)
+      if (owned.is_element(g))
+        ++owned_long_edges;
+    const types::global_dof_index n_owned_coarse = owned_coarse.size();
+    types::global_dof_index       first          = 0;
+    MPI_Exscan(&n_owned_coarse, &first, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      first = 0;
+    space.n_coarse       = Utilities::MPI::sum(n_owned_coarse, comm);
+    space.n_owned_coarse = n_owned_coarse;
+    space.owned_coarse_dofs = owned_coarse;
+    space.n_free_nodes = Utilities::MPI::sum(owned_long_edges, comm);
+
+    LinearAlgebra::distributed::Vector<double> coarse_index(owned, relevant, comm); // index + 1, 0: not coarse
+    for (types::global_dof_index i = 0; i < n_owned_coarse; ++i)
+      coarse_index(owned_coarse[i]) = first + i + 1.;
+    coarse_index.update_ghost_values();
+
+    // MPI AIJ on any rank count, like deal.II's PETSc matrices (PETSc multiplies only alike types).
+    check(MatCreate(comm, &space.prolongation), "MatCreate");
+    check(MatSetType(space.prolongation, MATMPIAIJ), "MatSetType(mpiaij)");
+    check(MatSetSizes(space.prolongation, owned.n_elements(), n_owned_coarse, PETSC_DETERMINE, PETSC_DETERMINE),
+          "MatSetSizes");
+    check(MatMPIAIJSetPreallocation(space.prolongation, 27, nullptr, 27, nullptr), "MatMPIAIJSetPreallocation");
+    check(MatSetOption(space.prolongation, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE), "MatSetOption");
+    std::vector<std::vector<std::pair<unsigned int, double>>> expansion(n_nodes);
+    std::vector<bool>                                         row_done(owned.n_elements(), false);
+    space.cells.clear();
+    space.cell_of_active_index.assign(dofs.get_triangulation().n_active_cells(), numbers::invalid_unsigned_int);
+    std::vector<PetscInt>                                     columns;
+    std::vector<PetscScalar>                                  values;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(cell_dofs);
+          // Each node in terms of the cell's free nodes, vertices first.
+          for (const unsigned int b : reference.by_mid_count)
+            {
+              expansion[b].clear();
+              if (is_free_node(b))
+                {
+                  expansion[b].emplace_back(b, 1.);
+                  continue;
+                }
+              for (const auto &[lower, weight] : reference.blend[b])
+                for (const auto &[node, w] : expansion[lower])
+                  expansion[b].emplace_back(node, weight * w);
+            }
+          // The cell's share: every DoF not held at zero, in its coarse DoFs.
+          space.cell_of_active_index[cell->active_cell_index()] = space.cells.size();
+          auto &share = space.cells.emplace_back();
+          for (unsigned int b = 0; b < n_nodes; ++b)
+            for (unsigned int c = 0; c < dim; ++c)
+              if (!constraints.is_constrained(dof_of(c, b)))
+                for (const auto &[node, w] : expansion[b])
+                  {
+                    const double index = coarse_index(dof_of(c, node));
+                    if (index == 0 || w == 0)
+                      continue;
+                    const auto column = static_cast<PetscInt>(index - 1);
+                    auto       slot   = std::find(share.columns.begin(), share.columns.end(), column);
+                    if (slot == share.columns.end())
+                      slot = share.columns.insert(slot, column);
+                    share.entries.push_back({static_cast<std::uint8_t>(fe.component_to_system_index(c, b)),
+                                             static_cast<std::uint8_t>(slot - share.columns.begin()),
+                                             static_cast<float>(w)});
+                  }
+          for (unsigned int b = 0; b < n_nodes; ++b)
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                const auto g = dof_of(c, b);
+                if (!owned.is_element(g) || row_done[owned.index_within_set(g)])
+                  continue;
+                row_done[owned.index_within_set(g)] = true;
+                if (constraints.is_constrained(g))
+                  continue;
+                columns.clear();
+                values.clear();
+                for (const auto &[node, w] : expansion[b])
+                  {
+                    const double index = coarse_index(dof_of(c, node));
+                    if (index == 0 || w == 0)
+                      continue;
+                    const auto column = static_cast<PetscInt>(index - 1);
+                    const auto found  = std::find(columns.begin(), columns.end(), column);
+                    if (found == columns.end())
+                      columns.push_back(column), values.push_back(w);
+                    else
+                      values[found - columns.begin()] += w;
+                  }
+                const PetscInt row = g;
+                check(MatSetValues(space.prolongation, 1, &row, columns.size(), columns.data(), values.data(),
+                                   INSERT_VALUES),
+                      "MatSetValues");
+              }
+        }
+    check(MatAssemblyBegin(space.prolongation, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    check(MatAssemblyEnd(space.prolongation, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  }
+
+  template void build_long_edge_space<2>(const DoFHandler<2> &, const AffineConstraints<double> &, double,
+                                         LongEdgeSpace &);
+  template void build_long_edge_space<3>(const DoFHandler<3> &, const AffineConstraints<double> &, double,
+                                         LongEdgeSpace &);
+} // namespace compliant::fast_solver
