@@ -1,10 +1,6 @@
 #include "fast_solver/long_edge_coarse_solver.h"
 
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
-
 #include <algorithm>
-
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,49 +26,65 @@ namespace compliant::fast_solver
     , space(std::move(space_in))
     , communicator(communicator_in)
   {
-    const PetscInt n = space->n_owned_coarse, size = space->n_coarse;
-    // The pattern: every cell couples all the coarse DoFs it reaches; rows of other ranks go to them.
-    PetscInt first = 0;
-    check(MatGetOwnershipRangeColumn(space->prolongation, &first, nullptr), "MatGetOwnershipRangeColumn");
-    dealii::IndexSet owned(size), relevant(size);
-    owned.add_range(first, first + n);
-    relevant.add_range(first, first + n);
-    std::vector<dealii::types::global_dof_index> columns;
-    for (const auto &cell : space->cells)
-      for (const auto column : cell.columns)
-        columns.push_back(column);
-    std::sort(columns.begin(), columns.end());
-    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
-    relevant.add_indices(columns.begin(), columns.end());
-    dealii::DynamicSparsityPattern pattern(size, size, relevant);
-    for (const auto &cell : space->cells)
+    // PETSc objects made before a failure are released here: the destructor does not run.
+    try
       {
-        columns.assign(cell.columns.begin(), cell.columns.end());
-        std::sort(columns.begin(), columns.end());
-        for (const auto row : columns)
-          pattern.add_entries(row, columns.begin(), columns.end(), true);
-      }
-    dealii::SparsityTools::distribute_sparsity_pattern(pattern, owned, communicator, relevant);
-    galerkin.reinit(owned, owned, pattern, communicator);
-    matrix = galerkin;
-    check(MatCreateVecs(matrix, &solution, &rhs), "MatCreateVecs");
-    level_operator.initialize_dof_vector(residual);
-    check(VecCreateMPIWithArray(communicator, 1, residual.locally_owned_size(), PETSC_DETERMINE, nullptr, &wrapped),
-          "VecCreateMPIWithArray");
+        const PetscInt n = space->n_owned_coarse, size = space->n_coarse;
+        // The pattern of the owned rows from the owned cells; the other ranks' cells add the rest of
+        // the rows on the partition boundary at the first assembly (then the pattern stays).
+        PetscInt first = 0;
+        check(MatGetOwnershipRangeColumn(space->prolongation, &first, nullptr), "MatGetOwnershipRangeColumn");
+        std::vector<std::vector<PetscInt>> rows(n);
+        for (const auto &cell : space->cells)
+          for (const auto row : cell.columns)
+            if (row >= first && row < first + n)
+              rows[row - first].insert(rows[row - first].end(), cell.columns.begin(), cell.columns.end());
+        std::vector<PetscInt> diagonal_block(n, 0), off_diagonal_block(n, 0);
+        for (PetscInt i = 0; i < n; ++i)
+          {
+            auto &row = rows[i];
+            std::sort(row.begin(), row.end());
+            row.erase(std::unique(row.begin(), row.end()), row.end());
+            for (const auto column : row)
+              ++(column >= first && column < first + n ? diagonal_block[i] : off_diagonal_block[i]);
+          }
+        check(MatCreate(communicator, &matrix), "MatCreate");
+        check(MatSetType(matrix, MATMPIAIJ), "MatSetType(mpiaij)");
+        check(MatSetSizes(matrix, n, n, size, size), "MatSetSizes");
+        check(MatMPIAIJSetPreallocation(matrix, 0, diagonal_block.data(), 0, off_diagonal_block.data()),
+              "MatMPIAIJSetPreallocation");
+        check(MatSetOption(matrix, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE), "MatSetOption");
+        check(MatCreateVecs(matrix, &solution, &rhs), "MatCreateVecs");
+        level_operator.initialize_dof_vector(residual);
+        check(VecCreateMPIWithArray(communicator, 1, residual.locally_owned_size(), PETSC_DETERMINE, nullptr, &wrapped),
+              "VecCreateMPIWithArray");
 
-    PC pc;
-    check(KSPCreate(communicator, &ksp), "KSPCreate");
-    check(KSPSetType(ksp, KSPPREONLY), "KSPSetType(preonly)");
-    check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check(PCSetType(pc, PCCHOLESKY), "PCSetType(cholesky)");
-    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
-    refactor();
+        PC pc;
+        check(KSPCreate(communicator, &ksp), "KSPCreate");
+        check(KSPSetType(ksp, KSPPREONLY), "KSPSetType(preonly)");
+        check(KSPGetPC(ksp, &pc), "KSPGetPC");
+        check(PCSetType(pc, PCCHOLESKY), "PCSetType(cholesky)");
+        check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
+        refactor();
+      }
+    catch (...)
+      {
+        release();
+        throw;
+      }
   }
 
   template <int dim>
   LongEdgeCoarseSolver<dim>::~LongEdgeCoarseSolver()
   {
+    release();
+  }
+
+  template <int dim>
+  void LongEdgeCoarseSolver<dim>::release()
+  {
     KSPDestroy(&ksp);
+    MatDestroy(&matrix);
     VecDestroy(&rhs);
     VecDestroy(&solution);
     VecDestroy(&wrapped);
@@ -81,7 +93,10 @@ namespace compliant::fast_solver
   template <int dim>
   void LongEdgeCoarseSolver<dim>::assemble()
   {
-    check(MatZeroEntries(matrix), "MatZeroEntries");
+    PetscBool assembled = PETSC_FALSE;
+    check(MatAssembled(matrix, &assembled), "MatAssembled");
+    if (assembled)
+      check(MatZeroEntries(matrix), "MatZeroEntries");
     level_operator.add_kernel_subspace_matrix(*space, matrix);
     check(MatAssemblyBegin(matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
     check(MatAssemblyEnd(matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
@@ -102,11 +117,18 @@ namespace compliant::fast_solver
     smoother.apply(level, dst, src);
     level_operator.vmult(residual, dst);
     residual.sadd(-1., 1., src);
+    // The residual's own storage as a PETSc vector, given back however the solve ends.
     check(VecPlaceArray(wrapped, residual.begin()), "VecPlaceArray");
-    check(MatMultTranspose(space->prolongation, wrapped, rhs), "MatMultTranspose");
-    check(KSPSolve(ksp, rhs, solution), "KSPSolve");
-    check(MatMult(space->prolongation, solution, wrapped), "MatMult");
+    const PetscErrorCode status = [&]() {
+      PetscErrorCode ierr = MatMultTranspose(space->prolongation, wrapped, rhs);
+      if (ierr == 0)
+        ierr = KSPSolve(ksp, rhs, solution);
+      if (ierr == 0)
+        ierr = MatMult(space->prolongation, solution, wrapped);
+      return ierr;
+    }();
     check(VecResetArray(wrapped), "VecResetArray");
+    check(status, "the coarse solve (P^T, MUMPS, P)");
     dst += residual;
     smoother.smooth(level, dst, src);
     ++n_solves;

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <deal.II/lac/la_parallel_vector.h>
-#include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/multigrid/mg_base.h>
 
 #include <petscksp.h>
@@ -45,13 +44,13 @@ namespace compliant::fast_solver
 
   private:
     void assemble();
+    void release(); // every PETSc object (null ones skipped)
 
     const MatrixFreeOperatorBase<dim, double> &level_operator;
     const dealii::MGSmootherBase<VectorType>  &smoother;
     std::shared_ptr<const LongEdgeSpace>       space;
     MPI_Comm                                   communicator;
-    dealii::PETScWrappers::MPI::SparseMatrix   galerkin;
-    Mat                                        matrix = nullptr; // galerkin's
+    Mat                                        matrix = nullptr; // the Galerkin matrix
     KSP                                        ksp    = nullptr;
     Vec                                        rhs = nullptr, solution = nullptr, wrapped = nullptr;
     mutable VectorType                         residual;

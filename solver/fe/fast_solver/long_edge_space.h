@@ -26,7 +26,7 @@ namespace compliant::fast_solver
   {
     Mat                             prolongation = nullptr; // degree-2 DoFs x coarse DoFs (owned rows, PETSc AIJ)
     dealii::types::global_dof_index n_coarse     = 0;       // global
-    dealii::types::global_dof_index n_free_nodes = 0;       // global count of free midpoints (DoFs / dim)
+    dealii::types::global_dof_index n_free_nodes = 0;       // global count of free midpoint nodes
     dealii::types::global_dof_index n_owned_coarse = 0;
     // The degree-2 DoF of each owned coarse DoF, in coarse order (a coarse DoF is a degree-2 DoF).
     std::vector<dealii::types::global_dof_index> owned_coarse_dofs;
@@ -41,8 +41,9 @@ namespace compliant::fast_solver
     };
     struct Cell
     {
-      std::vector<PetscInt> columns;
-      std::vector<Entry>    entries;
+      std::vector<PetscInt>      columns;
+      std::vector<Entry>         entries;    // by slot: those of slot k from slot_begin[k]
+      std::vector<std::uint16_t> slot_begin; // columns.size() + 1 offsets
     };
     std::vector<Cell>         cells;
     std::vector<unsigned int> cell_of_active_index; // numbers::invalid_unsigned_int where not owned

@@ -64,13 +64,14 @@ namespace compliant::fast_solver
     LowerCycle                                     lower_cycle; // its `lower` set: the coarse solve
     const Mapping<dim>                            *mapping = nullptr;
     MGSmootherPrecondition<Operator, SmootherType, VectorType> smoother;
+    // On long cells: the long-edge space below the degree-2 level (level 1), which is then the
+    // lowest level the V-cycle visits; level 0 is built but not used. Declared after the
+    // smoother it uses and before the V-cycle that holds it: destroyed in between.
+    std::shared_ptr<const LongEdgeSpace>           long_edges;
+    std::unique_ptr<LongEdgeCoarseSolver<dim>>     long_edge_solve;
     std::unique_ptr<mg::Matrix<VectorType>>        mg_matrix;
     std::unique_ptr<Multigrid<VectorType>>         multigrid;
     std::unique_ptr<PreconditionMG<dim, VectorType, TransferType>> preconditioner;
-    // On long cells: the long-edge space below the degree-2 level (level 1), which is then the
-    // lowest level the V-cycle visits; level 0 is built but not used.
-    std::shared_ptr<const LongEdgeSpace>           long_edges;
-    std::unique_ptr<LongEdgeCoarseSolver<dim>>     long_edge_solve;
 
     const MGCoarseGridBase<VectorType> &coarse_solve() const
     {
@@ -194,7 +195,9 @@ namespace compliant::fast_solver
     // A 3D factor takes about 14 kB per degree-1 DoF over all ranks (measured at 63k-203k DoFs):
     // MUMPS only where that leaves half the available memory to the rest.
     const double n_coarse      = L.dofs[0]->n_dofs();
-    const double memory        = available_memory();
+    // The smallest over the ranks: each rank reads its own node at its own moment, and the
+    // choices below must be the same on every rank.
+    const double memory        = Utilities::MPI::min(available_memory(), communicator);
     const bool   factor_fits   = dim < 3 || memory <= 0 || 14e3 * n_coarse <= 0.5 * memory;
     stats.coarse_direct        = settings.coarse == PMultigridSettings::Coarse::direct ||
                           (settings.coarse == PMultigridSettings::Coarse::automatic && a > 3 && factor_fits &&
@@ -237,7 +240,9 @@ namespace compliant::fast_solver
     build_long_edge_space(*L.dofs[1], L.constraints[1], settings.long_edge_aspect_ratio, *space);
     const double n    = space->n_coarse;
     const bool   fits = dim < 3 || memory <= 0 || settings.long_edge_factor_bytes_per_dof * n <= 0.5 * memory;
-    if (!fits || n > (dim == 3 ? settings.direct_coarse_limit_3d : settings.direct_coarse_limit))
+    // The aspect ratio above is the longest edge over the shortest of any cell; a skewed cell can
+    // pass it without being long in any direction, and then the space would be degree 1.
+    if (space->n_free_nodes == 0 || !fits || n > (dim == 3 ? settings.direct_coarse_limit_3d : settings.direct_coarse_limit))
       return false;
     stats.long_edge_dofs = space->n_coarse;
     L.long_edges         = std::move(space);
@@ -282,6 +287,7 @@ namespace compliant::fast_solver
     stats.coarse_direct        = below.coarse_direct;
     stats.coarse_reused        = true;
     stats.lower_reused         = true;
+    stats.long_edge_dofs       = below.long_edge_dofs;
     stats.level_dofs           = below.level_dofs;
     stats.level_dofs.push_back(fine_dofs.n_dofs());
     return true;
@@ -381,7 +387,8 @@ namespace compliant::fast_solver
     auto &L = *levels;
     if (L.lower_cycle.lower || (stats.coarse_reused && L.operators.max_level() > 0))
       throw std::logic_error("PMultigridSolver::update: the levels below are another solver's");
-    for (unsigned int level = L.operators.min_level(); level <= L.operators.max_level(); ++level)
+    // With the long-edge space level 0 is not used: its state is left as it was.
+    for (unsigned int level = L.long_edges ? 1 : L.operators.min_level(); level <= L.operators.max_level(); ++level)
       change(*L.operators[level]);
     // A degree-1 solver (top 0) whose reused level no longer fits the changed operator.
     if (stats.coarse_reused)

@@ -52,9 +52,12 @@ namespace compliant::fast_solver
             for (unsigned int i = 0; i < n; ++i)
               phi.begin_dof_values()[i] = Number(0);
             for (unsigned int lane = 0; lane < filled; ++lane)
-              for (const auto &e : cells[lane]->entries)
-                if (e.slot == j)
-                  phi.begin_dof_values()[position[e.dof]][lane] += e.weight;
+              if (j < cells[lane]->columns.size())
+                for (unsigned int k = cells[lane]->slot_begin[j]; k < cells[lane]->slot_begin[j + 1]; ++k)
+                  {
+                    const auto &e = cells[lane]->entries[k];
+                    phi.begin_dof_values()[position[e.dof]][lane] += e.weight;
+                  }
             local(phi);
             // Row k of column j: sum over the cell's DoFs of P(dof, k) (K P_j)(dof).
             for (unsigned int lane = 0; lane < filled; ++lane)

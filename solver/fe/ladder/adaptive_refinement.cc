@@ -11,7 +11,9 @@
 #include "quantities/comparison.h"
 #include "quantities/goal_functionals.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -47,7 +49,19 @@ namespace compliant
                                  const double cell_fraction)
     {
       auto &triangulation = problem.triangulation;
-      GridRefinement::refine_and_coarsen_fixed_number(triangulation, indicators, cell_fraction, 0.0);
+      // The fraction with the largest indicators, and with them every cell whose indicator ties with
+      // the smallest one marked to 1e-5: mirror cells of a symmetric part have equal indicators but
+      // for round-off (the solver's tolerance, float), and a tie must not be broken by round-off
+      // (refine_and_coarsen_fixed_number marks exact ties only).
+      const auto n_marked = static_cast<std::size_t>(cell_fraction * indicators.size());
+      if (n_marked > 0)
+        {
+          std::vector<float> sorted(indicators.begin(), indicators.end());
+          std::nth_element(sorted.begin(), sorted.begin() + (n_marked - 1), sorted.end(), std::greater<float>());
+          const double threshold = n_marked >= sorted.size() ? std::numeric_limits<double>::lowest() :
+                                                               (1 - 1e-5) * sorted[n_marked - 1];
+          GridRefinement::refine(triangulation, indicators, threshold);
+        }
       triangulation.prepare_coarsening_and_refinement();
       std::vector<bool> flags;
       triangulation.save_refine_flags(flags);
