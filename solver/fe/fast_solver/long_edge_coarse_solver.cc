@@ -30,15 +30,19 @@ namespace compliant::fast_solver
     try
       {
         const PetscInt n = space->n_owned_coarse, size = space->n_coarse;
-        // The pattern of the owned rows from the owned cells; the other ranks' cells add the rest of
-        // the rows on the partition boundary at the first assembly (then the pattern stays).
+        // The pattern of the owned rows, from the owned cells and the other ranks' cells at them.
         PetscInt first = 0;
         check(MatGetOwnershipRangeColumn(space->prolongation, &first, nullptr), "MatGetOwnershipRangeColumn");
         std::vector<std::vector<PetscInt>> rows(n);
-        for (const auto &cell : space->cells)
-          for (const auto row : cell.columns)
+        const auto add = [&](const std::vector<PetscInt> &columns) {
+          for (const auto row : columns)
             if (row >= first && row < first + n)
-              rows[row - first].insert(rows[row - first].end(), cell.columns.begin(), cell.columns.end());
+              rows[row - first].insert(rows[row - first].end(), columns.begin(), columns.end());
+        };
+        for (const auto &cell : space->cells)
+          add(cell.columns);
+        for (const auto &columns : space->neighbour_columns)
+          add(columns);
         std::vector<PetscInt> diagonal_block(n, 0), off_diagonal_block(n, 0);
         for (PetscInt i = 0; i < n; ++i)
           {

@@ -173,7 +173,6 @@ namespace compliant::fast_solver
         space.n_owned_coarse    = n;
         space.owned_coarse_dofs = coarse;
 
-        IndexSet relevant;
         DoFTools::extract_locally_relevant_dofs(dofs, relevant);
         coarse_index.reinit(owned, relevant, comm);
         for (std::size_t i = 0; i < coarse.size(); ++i)
@@ -197,6 +196,7 @@ namespace compliant::fast_solver
         expansion.resize(n_nodes);
         space.cells.clear();
         space.cell_of_active_index.assign(dofs.get_triangulation().n_active_cells(), numbers::invalid_unsigned_int);
+        space.neighbour_columns.clear();
         for (const auto &cell : dofs.active_cell_iterators())
           if (cell->is_locally_owned())
             {
@@ -205,6 +205,18 @@ namespace compliant::fast_solver
               space.cell_of_active_index[cell->active_cell_index()] = space.cells.size();
               add_share(space.cells.emplace_back());
               add_rows(space.prolongation, owned);
+            }
+          else if (!cell->is_artificial())
+            {
+              // Another rank's cell at an owned DoF: the coarse DoFs it couples with this rank's.
+              cell->get_dof_indices(cell_dofs);
+              if (std::none_of(cell_dofs.begin(), cell_dofs.end(), [&](auto g) { return owned.is_element(g); }) ||
+                  !std::all_of(cell_dofs.begin(), cell_dofs.end(), [&](auto g) { return relevant.is_element(g); }))
+                continue;
+              expand_nodes();
+              LongEdgeSpace::Cell neighbour;
+              add_share(neighbour);
+              space.neighbour_columns.push_back(std::move(neighbour.columns));
             }
         check(MatAssemblyBegin(space.prolongation, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
         check(MatAssemblyEnd(space.prolongation, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
@@ -317,6 +329,7 @@ namespace compliant::fast_solver
       std::vector<types::global_dof_index>                       cell_dofs;
       std::vector<unsigned int>                                  system_index;
       std::unordered_set<types::global_dof_index>                free_midpoints;
+      IndexSet                                                   relevant;
       LinearAlgebra::distributed::Vector<double>                 coarse_index; // column + 1, 0: not coarse
       std::vector<bool>                                          row_done;
       std::vector<std::vector<std::pair<unsigned int, double>>>  expansion;

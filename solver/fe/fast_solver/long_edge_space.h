@@ -46,6 +46,9 @@ namespace compliant::fast_solver
       std::vector<std::uint16_t> slot_begin; // columns.size() + 1 offsets
     };
     std::vector<Cell>         cells;
+    // The coarse DoFs of each other rank's cell at an owned DoF: the Galerkin matrix's rows of
+    // this rank get their entries from those cells too.
+    std::vector<std::vector<PetscInt>> neighbour_columns;
     std::vector<unsigned int> cell_of_active_index; // numbers::invalid_unsigned_int where not owned
 
     LongEdgeSpace() = default;
