@@ -5,7 +5,8 @@ level it replaces on long cells (Coarse space = degree-1) and against MUMPS on t
 
 Models: the thin torsion bar (a/b = 6, cells 12 : 1, the mesh of case.torsion_saint_venant_ab6) at
 three refinements, a plate of cells long in two directions, the thin leaf of leaf_torsion.prm
-(cells 8 : 1 : 1), the 3D blade hinge of hinge_3d.prm (reduced integration, graded) and the
+(cells 8 : 1 : 1), the 3D blade hinge of hinge_3d.prm (uniform m = 2, and graded 10 with reduced
+integration at m = 2 and 3, the meshes of speed_vs_peers.py --problem hinge --grade 10) and the
 finite-strain strip on cells 4 : 1 (Newton, the tangent's p-multigrid). For each: outer CG
 iterations (all Newton steps' for the strip), the solve time (`time_solve`, or `time_linear_solves`
 for the strip: the factorization included for MUMPS), the process's own total (`time_total`:
@@ -16,22 +17,25 @@ tolerance). MUMPS is left out above --direct-max-dofs (its 3D factor grows much 
   /usr/bin/python3 cases/benchmarks/long_edge_speed.py [--repeat N] [--direct-max-dofs N] [--out DIR]
 """
 import argparse
-import json
 import os
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "postproc"))
-from report_header import provenance  # noqa: E402
+from report_header import provenance, timed_run  # noqa: E402
 from study import mpi_env, solver_path  # noqa: E402
 
+sys.path.insert(0, os.path.join(HERE, "peers"))
+import hinge_mesh  # noqa: E402
+
 BAR = os.path.join(ROOT, "cases", "verification", "torsion_bar.prm")
+# The graded hinge meshes of speed_vs_peers.py --problem hinge --grade 10 (written by main).
+HINGE_GRADED = os.path.join(tempfile.gettempdir(), "long_edge_hinge_m2_graded10.inp")
+HINGE_GRADED_3 = os.path.join(tempfile.gettempdir(), "long_edge_hinge_m3_graded10.inp")
 BAR_SETS = ["Geometry/Parameters/H=6", "Geometry/Parameters/W=1", "Geometry/Parameters/L=120", "Comparison/Checks="]
 
 
@@ -49,7 +53,13 @@ MODELS = [
      cells(20, 10, 2), "J", "time_solve"),
     ("thin leaf in torsion, 10 x 20 x 2 cells (8:1:1)", os.path.join(HERE, "leaf_torsion.prm"), cells(10, 20, 2),
      "strain_energy", "time_solve"),
-    ("3D blade hinge, m = 2, graded 10, reduced", os.path.join(HERE, "hinge_3d.prm"), [],
+    ("3D blade hinge, m = 2 (blade cells 4:1:5)", os.path.join(HERE, "hinge_3d.prm"), [],
+     "rotational_stiffness_turned", "time_solve"),
+    ("3D blade hinge, m = 2, graded 10, reduced", os.path.join(HERE, "hinge_3d.prm"),
+     ["Geometry/Mesh file=" + HINGE_GRADED, "Discretization/Integration=reduced"],
+     "rotational_stiffness_turned", "time_solve"),
+    ("3D blade hinge, m = 3, graded 10, reduced", os.path.join(HERE, "hinge_3d.prm"),
+     ["Geometry/Mesh file=" + HINGE_GRADED_3, "Discretization/Integration=reduced"],
      "rotational_stiffness_turned", "time_solve"),
     ("finite-strain strip 10 x 8 x 2 (4:1 cells), 6 load steps", os.path.join(HERE, "flexure_finite_strain.prm"),
      cells(10, 8, 2), "rotational_stiffness_right", "time_linear_solves"),
@@ -62,22 +72,7 @@ METHODS = [
 
 
 def run(case, sets):
-    out = tempfile.mkdtemp(prefix="long-edge-")
-    cmd = ["mpirun", "-np", "2", solver_path(), case, "--set", "Output/Directory=" + out, "--set", "Output/Fields=false"]
-    for s in sets:
-        cmd += ["--set", s]
-    began = time.time()
-    result = subprocess.run(cmd, capture_output=True, text=True, env=mpi_env())
-    wall = time.time() - began
-    if result.returncode != 0:
-        sys.exit("long_edge_speed.py: %s failed:\n%s" % (" ".join(cmd), result.stdout[-2000:] + result.stderr[-2000:]))
-    with open(os.path.join(out, "summary.json")) as f:
-        summary = json.load(f)
-    subprocess.run(["rm", "-rf", out])
-    q = summary["quantities"]
-    q["wall"] = wall
-    q["note"] = summary["settings"].get("multigrid", "")
-    return q
+    return timed_run(solver_path(), case, sets, mpi_env())
 
 
 def main():
@@ -86,6 +81,8 @@ def main():
     ap.add_argument("--direct-max-dofs", type=float, default=2e5)
     ap.add_argument("--out", default=HERE)
     args = ap.parse_args()
+    hinge_mesh.write_inp(2, HINGE_GRADED, 10.0)
+    hinge_mesh.write_inp(3, HINGE_GRADED_3, 10.0)
     rows = ["| model | DoFs | method | iterations | solve | total in process | whole process | answer |",
             "|---|---|---|---|---|---|---|---|"]
     ratios = []

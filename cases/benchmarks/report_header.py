@@ -4,9 +4,12 @@ libraries and the peers, so that two reports can be told apart and a figure trac
 import math
 import os
 import platform
+import json
 import shlex
+import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
@@ -93,6 +96,31 @@ def provenance(argv=None):
             "",
             "Versions: " + "; ".join("%s %s" % item for item in versions().items()) + ".",
             ""]
+
+
+def timed_run(binary, case, sets, env, ranks=2):
+    """One `mpirun` of our solver with Output/Fields off and the `--set` values given: its summary's
+    quantities with "wall" (the whole process, s) and "note" (the multigrid's log words) added.
+    Exits naming the command and the solver's last output if it fails."""
+    out = tempfile.mkdtemp(prefix="bench-")
+    cmd = ["mpirun", "-np", str(ranks), binary, case, "--set", "Output/Directory=" + out, "--set", "Output/Fields=false"]
+    for s in sets:
+        cmd += ["--set", s]
+    began = time.time()
+    result = subprocess.run(cmd, capture_output=True, text=True, env=env)
+    wall = time.time() - began
+    try:
+        if result.returncode != 0:
+            sys.exit("%s: %s failed:\n%s" % (os.path.basename(sys.argv[0]), " ".join(cmd),
+                                            result.stdout[-2000:] + result.stderr[-2000:]))
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+    finally:
+        shutil.rmtree(out, ignore_errors=True)
+    quantities = summary["quantities"]
+    quantities["wall"] = wall
+    quantities["note"] = summary["settings"].get("multigrid", "")
+    return quantities
 
 
 def fit_slope(points):

@@ -11,18 +11,16 @@ must agree to the solver's tolerance; the sums run in another order).
   /usr/bin/python3 cases/benchmarks/simd_speed.py [--scalar-build DIR] [--repeat N] [--out DIR]
 """
 import argparse
-import json
 import os
 import subprocess
 import sys
 import tempfile
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "postproc"))
-from report_header import provenance  # noqa: E402
+from report_header import provenance, timed_run  # noqa: E402
 from study import mpi_env, solver_path  # noqa: E402
 
 VERIFY = os.path.join(ROOT, "cases", "verification")
@@ -59,19 +57,7 @@ def build_scalar(directory):
 
 
 def run(binary, case, sets):
-    out = tempfile.mkdtemp(prefix="simd-")
-    cmd = ["mpirun", "-np", "2", binary, case, "--set", "Output/Directory=" + out, "--set", "Output/Fields=false"]
-    for s in sets:
-        cmd += ["--set", s]
-    began = time.time()
-    result = subprocess.run(cmd, capture_output=True, text=True, env=mpi_env())
-    wall = time.time() - began
-    if result.returncode != 0:
-        sys.exit("simd_speed.py: %s failed:\n%s" % (" ".join(cmd), result.stdout[-2000:] + result.stderr[-2000:]))
-    with open(os.path.join(out, "summary.json")) as f:
-        quantities = json.load(f)["quantities"]
-    quantities["wall"] = wall
-    return quantities
+    return timed_run(binary, case, sets, mpi_env())
 
 
 def main():

@@ -1,4 +1,5 @@
 #include "analyses/modal_eigensolver.h"
+#include "linear_algebra/petsc_check.h"
 
 #include <slepceps.h>
 
@@ -11,12 +12,7 @@ namespace compliant
 {
   namespace
   {
-    void check(PetscErrorCode ierr, const char *what)
-    {
-      if (ierr != 0)
-        throw std::runtime_error(std::string("SLEPc/PETSc error in ") + what + " (code " +
-                                 std::to_string(ierr) + ")");
-    }
+    const PetscErrorCheck check("modal analysis (SLEPc)");
 
     // Owns the EPS so that every exit path destroys it.
     struct EpsHandle

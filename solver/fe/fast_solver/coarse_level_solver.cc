@@ -1,6 +1,7 @@
 #include "fast_solver/coarse_level_solver.h"
 
 #include "linear_algebra/petsc_linear_solver.h"
+#include "linear_algebra/petsc_check.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_accessor.h>
@@ -14,11 +15,7 @@ namespace compliant::fast_solver
 {
   namespace
   {
-    void check(const PetscErrorCode ierr, const char *what)
-    {
-      if (ierr != 0)
-        throw std::runtime_error(std::string("coarse level solver: PETSc error in ") + what);
-    }
+    const PetscErrorCheck check("coarse level solver");
   } // namespace
 
   CoarseLevelSolver::CoarseLevelSolver(dealii::PETScWrappers::MPI::SparseMatrix         &matrix,

@@ -1,4 +1,5 @@
 #include "fast_solver/long_edge_coarse_solver.h"
+#include "linear_algebra/petsc_check.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -9,11 +10,7 @@ namespace compliant::fast_solver
 {
   namespace
   {
-    void check(const PetscErrorCode ierr, const char *what)
-    {
-      if (ierr != 0)
-        throw std::runtime_error(std::string("long-edge coarse solve: PETSc error in ") + what);
-    }
+    const PetscErrorCheck check("long-edge coarse solve");
   } // namespace
 
   template <int dim>

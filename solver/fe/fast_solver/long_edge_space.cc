@@ -1,4 +1,5 @@
 #include "fast_solver/long_edge_space.h"
+#include "linear_algebra/petsc_check.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_accessor.h>
@@ -20,11 +21,7 @@ namespace compliant::fast_solver
 
   namespace
   {
-    void check(const PetscErrorCode ierr, const char *what)
-    {
-      if (ierr != 0)
-        throw std::runtime_error(std::string("long-edge coarse space: PETSc error in ") + what);
-    }
+    const PetscErrorCheck check("long-edge coarse space");
 
     // The degree-2 nodes of the reference cell: which directions each is a midpoint in, and its
     // Boolean-sum blend from the nodes with one midpoint direction fewer and below.

@@ -12,6 +12,15 @@ namespace compliant::fast_solver
 {
   using namespace dealii;
 
+  template <typename Number>
+  bool constraints_have_entries(const AffineConstraints<Number> &constraints, MPI_Comm communicator)
+  {
+    bool entries = false;
+    for (const auto &line : constraints.get_lines())
+      entries = entries || !line.entries.empty();
+    return Utilities::MPI::logical_or(entries, communicator);
+  }
+
   template <int dim, typename Number>
   void MatrixFreeOperatorBase<dim, Number>::reinit_matrix_free(const Mapping<dim>              &mapping_in,
                                                                const DoFHandler<dim>           &dof_handler,
@@ -21,12 +30,8 @@ namespace compliant::fast_solver
     fe_degree   = dof_handler.get_fe().degree;
     constraints = &constraints_in;
     mapping     = &mapping_in;
-    constraints_have_entries = false;
-    for (const auto &line : constraints_in.get_lines())
-      if (!line.entries.empty())
-        constraints_have_entries = true;
-    constraints_have_entries =
-      Utilities::MPI::logical_or(constraints_have_entries, dof_handler.get_communicator());
+    reduced_quadrature = with_reduced_quadrature;
+    constraints_have_entries = fast_solver::constraints_have_entries(constraints_in, dof_handler.get_communicator());
     typename MatrixFree<dim, Number, SimdArray<Number>>::AdditionalData additional_data;
     additional_data.tasks_parallel_scheme = MatrixFree<dim, Number, SimdArray<Number>>::AdditionalData::none;
     additional_data.mapping_update_flags  = update_gradients | update_JxW_values;
@@ -135,6 +140,7 @@ namespace compliant::fast_solver
     throw std::logic_error("matrix-free operator: entries are not stored");
   }
 
+  template bool constraints_have_entries(const AffineConstraints<double> &, MPI_Comm);
   template class MatrixFreeOperatorBase<2, double>;
   template class MatrixFreeOperatorBase<3, double>;
 } // namespace compliant::fast_solver

@@ -27,6 +27,10 @@ namespace compliant::fast_solver
 {
   struct LongEdgeSpace; // fast_solver/long_edge_space.h
 
+  // Whether any constraint on any rank has entries (hanging nodes, ties), not only fixed values.
+  template <typename Number>
+  bool constraints_have_entries(const dealii::AffineConstraints<Number> &constraints, MPI_Comm communicator);
+
   template <int dim, typename Number>
   class MatrixFreeOperatorBase : public dealii::Subscriptor
   {
@@ -65,6 +69,9 @@ namespace compliant::fast_solver
 
     const dealii::MatrixFree<dim, Number, SimdArray<Number>> &matrix_free() const { return *data; }
     unsigned int                           degree() const { return fe_degree; }
+    // Whether the kernel also has the reduced rule (Discretization/Integration = reduced), whose
+    // soft hourglass modes the smoother has to reach.
+    bool has_reduced_quadrature() const { return reduced_quadrature; }
 
   protected:
     // constraints must be homogeneous (hanging nodes, supports held at zero): the operator acts
@@ -90,6 +97,7 @@ namespace compliant::fast_solver
     const dealii::Mapping<dim>                      *mapping     = nullptr;
     bool                                             constraints_have_entries = false;
     unsigned int                                     fe_degree   = 1;
+    bool                                             reduced_quadrature = false;
 
   private:
     std::vector<unsigned int> constrained_local_dofs;

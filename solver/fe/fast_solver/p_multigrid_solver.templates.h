@@ -179,42 +179,46 @@ namespace compliant::fast_solver
 
     const auto fingerprint = take_kept ? std::vector<double>() : degree_one_fingerprint(*L.dofs[0], communicator);
     stats.coarse_reused    = take_kept || (reused && degree_one_level_fits(*reused, *L.dofs[0], fingerprint, communicator));
+    stats.largest_aspect_ratio = largest_cell_aspect_ratio(fine_dofs.get_triangulation(), communicator);
+    const double a             = stats.largest_aspect_ratio;
+    // The smallest over the ranks: each rank reads its own node at its own moment, and the
+    // choices below must be the same on every rank.
+    const double memory        = Utilities::MPI::min(available_memory(), communicator);
+    const bool   long_edges    = choose_long_edge_space(a, memory);
     for (unsigned int level = 0; level <= top; ++level)
       {
         L.operators[level] = std::make_shared<typename Levels::Operator>();
-        // A reused degree-1 level is solved without this level's operator: its vectors' layout only.
-        if (level == 0 && stats.coarse_reused && top > 0)
+        // A reused degree-1 level is solved without this level's operator, and the long-edge space
+        // replaces it: its vectors' layout only.
+        if (level == 0 && (stats.coarse_reused || long_edges) && top > 0)
           L.operators[level]->reinit_layout(mapping, *L.dofs[level], L.constraints[level]);
         else
           level_setup(*L.operators[level], mapping, *L.dofs[level], L.constraints[level]);
       }
     build_transfer();
 
-    stats.largest_aspect_ratio = largest_cell_aspect_ratio(fine_dofs.get_triangulation(), communicator);
-    const double a             = stats.largest_aspect_ratio;
     // A 3D factor takes about 14 kB per degree-1 DoF over all ranks (measured at 63k-203k DoFs):
     // MUMPS only where that leaves half the available memory to the rest.
     const double n_coarse      = L.dofs[0]->n_dofs();
-    // The smallest over the ranks: each rank reads its own node at its own moment, and the
-    // choices below must be the same on every rank.
-    const double memory        = Utilities::MPI::min(available_memory(), communicator);
     const bool   factor_fits   = dim < 3 || memory <= 0 || 14e3 * n_coarse <= 0.5 * memory;
     stats.coarse_direct        = settings.coarse == PMultigridSettings::Coarse::direct ||
                           (settings.coarse == PMultigridSettings::Coarse::automatic && a > 3 && factor_fits &&
                            n_coarse <= (dim == 3 ? settings.direct_coarse_limit_3d : settings.direct_coarse_limit));
     if (stats.coarse_reused)
       L.coarse = reused, stats.coarse_direct = reused->direct;
-    else if (choose_long_edge_space(a, memory))
+    else if (long_edges)
       stats.coarse_direct = true;
     else
       coarse_rigid_body_modes = rigid_body_modes(mapping, *L.dofs[0], communicator);
     // Without the long-edge space, the diagonal has to damp the long cells' smooth modes: a wider
     // range with a higher polynomial, both from the aspect ratio a. With it, the range of cubes.
-    const bool long_edges  = L.long_edges != nullptr;
+    const bool reduced     = long_edges && L.operators[1]->has_reduced_quadrature();
     stats.smoothing_range  = settings.smoothing_range > 0 ? settings.smoothing_range :
+                             reduced                      ? settings.long_edge_reduced_smoothing_range :
                              long_edges                   ? settings.long_edge_smoothing_range :
                                                             std::clamp(3 * a * a, 20.0, 400.0);
     stats.smoothing_degree = settings.smoothing_degree > 0 ? settings.smoothing_degree :
+                             reduced    ? settings.long_edge_reduced_smoothing_degree :
                              long_edges ? settings.long_edge_smoothing_degree :
                                           std::clamp<unsigned int>(std::lround(std::sqrt(stats.smoothing_range)) - 1, 4, 16);
     build_smoother_and_coarse_solver(fingerprint);
@@ -228,13 +232,10 @@ namespace compliant::fast_solver
     auto &L = *levels;
     // Asked for GAMG: no factor. Asked for a factor (direct): the long-edge space's is one.
     if (!settings.long_edge_space || settings.coarse == PMultigridSettings::Coarse::amg ||
-        L.operators.max_level() < 1 || aspect_ratio <= settings.long_edge_aspect_ratio || stats.coarse_reused)
+        L.dofs.max_level() < 1 || aspect_ratio <= settings.long_edge_aspect_ratio || stats.coarse_reused)
       return false;
     // Hanging nodes and ties: the space's blend does not follow them.
-    bool entries = false;
-    for (const auto &line : L.constraints[1].get_lines())
-      entries = entries || !line.entries.empty();
-    if (Utilities::MPI::logical_or(entries, communicator))
+    if (constraints_have_entries(L.constraints[1], communicator))
       return false;
     auto space = std::make_shared<LongEdgeSpace>();
     build_long_edge_space(*L.dofs[1], L.constraints[1], settings.long_edge_aspect_ratio, *space);

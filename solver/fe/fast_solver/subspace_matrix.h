@@ -9,6 +9,7 @@
 #include <deal.II/matrix_free/matrix_free.h>
 
 #include "fast_solver/long_edge_space.h"
+#include "linear_algebra/petsc_check.h"
 
 #include <petscmat.h>
 
@@ -74,8 +75,8 @@ namespace compliant::fast_solver
             for (PetscInt r = 0; r < m; ++r)
               for (PetscInt c = 0; c < m; ++c)
                 values[r * m + c] = block[(lane * n_columns + r) * n_columns + c];
-            if (MatSetValues(matrix, m, columns.data(), m, columns.data(), values.data(), ADD_VALUES) != 0)
-              throw std::runtime_error("long-edge space: PETSc error in MatSetValues");
+            PetscErrorCheck("long-edge Galerkin matrix")(
+              MatSetValues(matrix, m, columns.data(), m, columns.data(), values.data(), ADD_VALUES), "MatSetValues");
           }
       }
   }

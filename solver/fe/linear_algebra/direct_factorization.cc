@@ -1,4 +1,5 @@
 #include "linear_algebra/direct_factorization.h"
+#include "linear_algebra/petsc_check.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -9,11 +10,7 @@ namespace compliant
 {
   namespace
   {
-    void check(PetscErrorCode ierr, const char *what)
-    {
-      if (ierr != 0)
-        throw std::runtime_error(std::string("PETSc error in ") + what + " (code " + std::to_string(ierr) + ")");
-    }
+    const PetscErrorCheck check("direct factorization");
   } // namespace
 
   DirectFactorization::~DirectFactorization()

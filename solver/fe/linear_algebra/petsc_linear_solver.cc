@@ -1,6 +1,7 @@
 #include "linear_algebra/petsc_linear_solver.h"
 
 #include "linear_algebra/direct_factorization.h"
+#include "linear_algebra/petsc_check.h"
 
 #include <petscksp.h>
 
@@ -11,12 +12,7 @@ namespace compliant
 {
   namespace
   {
-    void check(PetscErrorCode ierr, const char *what)
-    {
-      if (ierr != 0)
-        throw std::runtime_error(std::string("PETSc error in ") + what + " (code " +
-                                 std::to_string(ierr) + ")");
-    }
+    const PetscErrorCheck check("linear solver");
 
     // MatNullSpaceCreate requires orthonormal vectors.
     void orthonormalize(std::vector<dealii::PETScWrappers::MPI::Vector> &modes)

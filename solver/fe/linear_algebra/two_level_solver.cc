@@ -1,6 +1,7 @@
 #include "linear_algebra/two_level_solver.h"
 
 #include "linear_algebra/direct_factorization.h"
+#include "linear_algebra/petsc_check.h"
 
 #include <petscksp.h>
 
@@ -12,11 +13,7 @@ namespace compliant
 {
   namespace
   {
-    void check(const PetscErrorCode ierr, const char *what)
-    {
-      if (ierr != 0)
-        throw std::runtime_error(std::string("two-level solver: PETSc error in ") + what);
-    }
+    const PetscErrorCheck check("two-level solver");
 
     // The coarse level: the residual zeroed where the coarse constraints fix the DoF (the
     // condensed factor then returns zero there), then the factor's back-substitution.
