@@ -5,8 +5,10 @@
 //   across a cell (the check can fail);
 // - the matrix the operator's kernel computes cell by cell equals P^T K P formed by PETSc from the
 //   assembled degree-2 matrix, with full and with reduced integration;
+// - cells long in x and z are long in a plate 1 thick and stay linear in a block 12 thick;
 // in 2D and 3D, on any rank count (the ctest runs it on 1 and on 2 ranks).
 #include <deal.II/base/function.h>
+#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -17,6 +19,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include "fast_solver/elasticity_operator.h"
+#include "fast_solver/long_cells.h"
 #include "fast_solver/long_edge_space.h"
 
 #include <gtest/gtest.h>
@@ -82,7 +85,7 @@ namespace
       constraints.reinit(relevant);
       DoFTools::make_zero_boundary_constraints(dofs, 0, constraints);
       constraints.close();
-      compliant::fast_solver::build_long_edge_space(dofs, constraints, 3., space);
+      compliant::fast_solver::build_long_edge_space(dofs, constraints, compliant::fast_solver::find_long_cells(mesh, 3., 2.), space);
     }
   };
 
@@ -179,4 +182,40 @@ TEST(LongEdgeSpace, GalerkinMatrixFromTheKernel)
   EXPECT_LT(galerkin_difference<3>(false, -1.), 1e-12);
   EXPECT_LT(galerkin_difference<3>(true, -1.), 1e-12);
   EXPECT_LT(galerkin_difference<3>(false, 0.02), 1e-12); // reduced integration, two rules
+}
+
+// Cells 3 x 0.5 x 3 stacked 2 deep make a plate 1 thick (each is long in x and z), stacked 24 deep
+// a block 12 thick, 4 times their length (none is: linear, 6 : 1). On the solver's mesh type, whose
+// every rank sees every cell, so that each walk through the stack is whole.
+TEST(LongEdgeSpace, SlabsOfAThickBlockStayLinear)
+{
+  for (const unsigned int layers : {2u, 24u})
+    {
+      parallel::shared::Triangulation<3> mesh(MPI_COMM_WORLD, Triangulation<3>::none, false,
+                                              parallel::shared::Triangulation<3>::partition_metis);
+      GridGenerator::subdivided_hyper_rectangle(mesh, {2, layers, 2}, Point<3>(), Point<3>(6., 0.5 * layers, 6.));
+      const auto   cells     = compliant::fast_solver::find_long_cells(mesh, 3., 2.);
+      unsigned int long_ones = 0, owned = 0;
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (cell->is_locally_owned())
+          long_ones += cells.mask[cell->active_cell_index()] == 0b101, ++owned;
+      EXPECT_EQ(Utilities::MPI::sum(owned, MPI_COMM_WORLD), 4 * layers);
+      EXPECT_EQ(Utilities::MPI::sum(long_ones, MPI_COMM_WORLD), layers == 2 ? 8u : 0u);
+      EXPECT_NEAR(cells.largest_linear_aspect_ratio, layers == 2 ? 1. : 6., 1e-12);
+    }
+}
+
+// A leaf 12 wide and 1 thick in cells 3 x 0.5 x 0.5: across y the part is 12 thick, across z 1;
+// the thinner side decides, and every cell is long in x.
+TEST(LongEdgeSpace, ALeafIsThinAcrossItsThinnerSide)
+{
+  parallel::shared::Triangulation<3> mesh(MPI_COMM_WORLD, Triangulation<3>::none, false,
+                                          parallel::shared::Triangulation<3>::partition_metis);
+  GridGenerator::subdivided_hyper_rectangle(mesh, {4, 24, 2}, Point<3>(), Point<3>(12., 12., 1.));
+  const auto   cells     = compliant::fast_solver::find_long_cells(mesh, 3., 2.);
+  unsigned int long_ones = 0;
+  for (const auto &cell : mesh.active_cell_iterators())
+    if (cell->is_locally_owned())
+      long_ones += cells.mask[cell->active_cell_index()] == 0b001;
+  EXPECT_EQ(Utilities::MPI::sum(long_ones, MPI_COMM_WORLD), 4u * 24 * 2);
 }

@@ -80,24 +80,6 @@ namespace compliant::fast_solver
         });
       }
     };
-
-    // The directions in which a cell is at least `threshold` times longer than in its shortest
-    // one, from the mean length of its edges in each direction.
-    template <int dim, typename Cell>
-    unsigned int long_directions(const Cell &cell, const double threshold)
-    {
-      std::array<double, dim> extent{};
-      for (unsigned int d = 0; d < dim; ++d)
-        for (unsigned int v = 0; v < (1u << dim); ++v)
-          if (!(v & (1u << d)))
-            extent[d] += cell->vertex(v).distance(cell->vertex(v | (1u << d)));
-      const double shortest = *std::min_element(extent.begin(), extent.end());
-      unsigned int mask     = 0;
-      for (unsigned int d = 0; d < dim; ++d)
-        if (extent[d] >= threshold * shortest)
-          mask |= 1u << d;
-      return mask;
-    }
   } // namespace
 
   LongEdgeSpace::~LongEdgeSpace()
@@ -126,12 +108,12 @@ namespace compliant::fast_solver
       // The midpoint nodes whose midpoint directions are all long in some cell, by the DoF of
       // their first component: from every cell this rank sees, so that each node of an owned
       // cell has the verdicts of all its cells.
-      void mark_free_nodes(const double aspect_threshold)
+      void mark_free_nodes(const LongCells &long_cells)
       {
         for (const auto &cell : dofs.active_cell_iterators())
           if (!cell->is_artificial())
             {
-              const unsigned int mask = long_directions<dim>(cell, aspect_threshold);
+              const unsigned int mask = long_cells.mask[cell->active_cell_index()];
               if (mask == 0)
                 continue;
               cell->get_dof_indices(cell_dofs);
@@ -337,19 +319,19 @@ namespace compliant::fast_solver
 
   template <int dim>
   void build_long_edge_space(const DoFHandler<dim> &dofs, const AffineConstraints<double> &constraints,
-                             const double aspect_threshold, LongEdgeSpace &space)
+                             const LongCells &long_cells, LongEdgeSpace &space)
   {
     const auto &fe = dofs.get_fe();
     if (fe.n_base_elements() != 1 || fe.base_element(0).degree != 2 || fe.n_components() != dim)
       throw std::logic_error("long-edge coarse space: needs dim components of FE_Q(2)");
     Builder<dim> builder(dofs, constraints);
-    builder.mark_free_nodes(aspect_threshold);
+    builder.mark_free_nodes(long_cells);
     builder.number_coarse_dofs(space);
     builder.fill(space);
   }
 
-  template void build_long_edge_space<2>(const DoFHandler<2> &, const AffineConstraints<double> &, double,
-                                         LongEdgeSpace &);
-  template void build_long_edge_space<3>(const DoFHandler<3> &, const AffineConstraints<double> &, double,
-                                         LongEdgeSpace &);
+  template void build_long_edge_space<2>(const DoFHandler<2> &, const AffineConstraints<double> &,
+                                         const LongCells &, LongEdgeSpace &);
+  template void build_long_edge_space<3>(const DoFHandler<3> &, const AffineConstraints<double> &,
+                                         const LongCells &, LongEdgeSpace &);
 } // namespace compliant::fast_solver

@@ -5,8 +5,8 @@
 // neither Q1 nor a smoother on the diagonal can reach.
 //
 // Its degrees of freedom are the degree-2 ones at the vertices and at the midpoints of long
-// edges (an edge is long where a cell it bounds is at least `aspect_threshold` times longer in
-// that direction than in its shortest one). Every other degree-2 node takes the Boolean-sum
+// edges (an edge is long where a cell it bounds is long in its direction, long_cells: at least
+// some times longer in it than in its shortest direction, in a thin part, fast_solver/long_cells.h). Every other degree-2 node takes the Boolean-sum
 // (Coons) blend of the nodes of its edge, face or cell: exact on the functions linear in one
 // direction, and defined by the face alone, so the space is conforming. DoFs held at zero by
 // the constraints are not in the space.
@@ -14,6 +14,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+
+#include "fast_solver/long_cells.h"
 
 #include <petscmat.h>
 
@@ -61,5 +63,5 @@ namespace compliant::fast_solver
   // nodes or ties), with the locally relevant lines.
   template <int dim>
   void build_long_edge_space(const dealii::DoFHandler<dim> &dofs, const dealii::AffineConstraints<double> &constraints,
-                             double aspect_threshold, LongEdgeSpace &space);
+                             const LongCells &long_cells, LongEdgeSpace &space);
 } // namespace compliant::fast_solver

@@ -58,16 +58,20 @@ namespace compliant::fast_solver
     enum class Coarse { automatic, amg, direct } coarse = Coarse::automatic;
     double       direct_coarse_limit    = 250000;
     double       direct_coarse_limit_3d = 150000;
-    // Long cells (aspect ratio > long_edge_aspect_ratio), degree >= 2, coarse level not amg, no
-    // hanging nodes: below the degree-2 level the long-edge space (fast_solver/long_edge_space.h)
-    // replaces the degree-1 level, factored by MUMPS while within the limits above, and the
-    // smoother keeps the degree and range of cubes. On the 12:1 torsion bar (63k DoFs) the outer
-    // iterations went from 34 (degree 1 factored, Chebyshev 16 over 400) to 12 (4 over 20).
-    // Reduced integration leaves soft hourglass modes outside the space: a wider range. Measured
-    // (63k torsion bar, plate, leaf, graded blade hinge at m = 2, 3): 4 over 20 took 38, 24, 27,
-    // 36, 36 iterations, 12 over 150 took 14, 9, 10, 14, 13 and 5-17 % less time.
+    // Long cells (aspect ratio > long_edge_aspect_ratio), all in thin parts (long_cells.h),
+    // degree >= 2, coarse level not amg, no hanging nodes: below the degree-2 level the long-edge
+    // space (fast_solver/long_edge_space.h) replaces the degree-1 level, factored by MUMPS while
+    // within the limits above, and the smoother keeps the degree and range of cubes. On the 12:1
+    // torsion bar (63k DoFs) the outer iterations went from 34 (degree 1 factored, Chebyshev 16
+    // over 400) to 12 (4 over 20). Reduced integration leaves soft hourglass modes outside the
+    // space: a wider range. On the 63k bar, the plate and the leaf, 4 over 20 took 38, 24, 27
+    // iterations, 12 over 150 14, 9, 10 and 5-17 % less time.
     bool         long_edge_space              = true;
     double       long_edge_aspect_ratio       = 3;
+    // A long cell in a part more than this many times as thick across it as it is long (a block
+    // meshed in slabs) is not thin, and then the degree-1 level is used: on the graded blade hinge
+    // the space took 36 iterations and 10-30 % more time than the degree-1 level's 20.
+    double       long_edge_slenderness        = 2;
     unsigned int long_edge_smoothing_degree   = 4;
     double       long_edge_smoothing_range    = 20;
     unsigned int long_edge_reduced_smoothing_degree = 12;

@@ -237,8 +237,14 @@ namespace compliant::fast_solver
     // Hanging nodes and ties: the space's blend does not follow them.
     if (constraints_have_entries(L.constraints[1], communicator))
       return false;
+    // Where long cells remain in thick parts, the smoother has to be as wide as for the degree-1
+    // level anyway, and that level serves as well for less (graded blade hinge, m = 2 and 3).
+    const LongCells long_cells =
+      find_long_cells(L.dofs[1]->get_triangulation(), settings.long_edge_aspect_ratio, settings.long_edge_slenderness);
+    if (long_cells.largest_linear_aspect_ratio > settings.long_edge_aspect_ratio)
+      return false;
     auto space = std::make_shared<LongEdgeSpace>();
-    build_long_edge_space(*L.dofs[1], L.constraints[1], settings.long_edge_aspect_ratio, *space);
+    build_long_edge_space(*L.dofs[1], L.constraints[1], long_cells, *space);
     const double n    = space->n_coarse;
     const bool   fits = dim < 3 || memory <= 0 || settings.long_edge_factor_bytes_per_dof * n <= 0.5 * memory;
     // The aspect ratio above is the longest edge over the shortest of any cell; a skewed cell can

@@ -239,10 +239,12 @@ namespace compliant
                           "Extra PETSc options, e.g. '-pc_gamg_threshold 0.02'.");
         prm.declare_entry("Coarse space", "auto", Patterns::Selection("auto|degree-1"),
                           "Lowest level of the matrix-free p-multigrid. auto: on cells more than 3 "
-                          "times longer than thick (and no hanging nodes), the long-edge space below "
-                          "degree 2: quadratic along each cell's long edges and linear across, which "
-                          "holds the bending modes that degree 1 locks on, factored by MUMPS (thin "
-                          "torsion bar, 12:1 cells: 12 iterations instead of 34); elsewhere degree 1. "
+                          "times longer than thick in thin parts (at most twice as thick across a "
+                          "cell as it is long; no hanging nodes), the long-edge space below degree "
+                          "2: quadratic along each cell's long edges and linear across, which holds "
+                          "the bending modes that degree 1 locks on, factored by MUMPS (thin torsion "
+                          "bar, 12:1 cells: 12 iterations instead of 34); degree 1 where long cells "
+                          "lie in thick parts (a block meshed in slabs) or none are long. "
                           "degree-1: always the degree-1 level (MUMPS on long cells, else GAMG).");
       }
       prm.leave_subsection();
