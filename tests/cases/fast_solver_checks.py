@@ -16,7 +16,8 @@ refinement. Iteration counts and agreement, not times: machine independent.
    answer to 1e-8.
 3. 'auto' chooses matrix-free on hexahedra at degree 2, and on a tetrahedral mesh says why not
    and uses an assembled-matrix method; an explicit matrix-free request there falls back with a note.
-   On long cells the long-edge coarse space against the degree-1 level (2c below).
+   On long cells the long-edge coarse space against the degree-1 level (2c below); long cells in a
+   thick block keep the degree-1 level.
 4. 'auto' redoes a failed iterative solve with MUMPS and says so; an explicit request fails clearly.
 """
 import os
@@ -121,6 +122,21 @@ for name, sets, figure, degree_one_figure in long_models:
           % (name, q["n_dofs"], q["solver_iterations"], figure, q["strain_energy"], exact))
     check(p["solver_iterations"] <= degree_one_figure + 1 and abs(p["strain_energy"] - exact) < 1e-8 * exact,
           "%s: %d iterations with the degree-1 level (figure %d)" % (name, p["solver_iterations"], degree_one_figure))
+
+# A block 100 x 100 x 100 meshed in slabs 2.5 x 50 x 50 (cells 20:1 long in y and z, in a part 100
+# thick across them: not thin) keeps the degree-1 level, with MUMPS's answer; the same cantilever
+# 100 x 10 x 10 on cells 10 x 2.5 x 2.5 (thin) takes the long-edge space.
+for name, sets, lowest in [
+        ("block in slabs", ["Geometry/Parameters/H=100", "Geometry/Parameters/W=100", "Geometry/Parameters/nx=40",
+                            "Geometry/Parameters/ny=2", "Geometry/Parameters/nz=2"], "degree-1 level"),
+        ("cantilever on 4:1 cells", ["Geometry/Parameters/nx=10"], "long-edge space")]:
+    sets = sets + ["Comparison/Checks=", "Linear solver/Relative tolerance=1e-12"]
+    chosen = run_case(beam, sets)
+    tip_y = run_case(beam, sets + ["Linear solver/Method=direct"])["quantities"]["displacement_tip_y"]
+    note = chosen["settings"].get("multigrid", "")
+    check(lowest in note and abs(chosen["quantities"]["displacement_tip_y"] - tip_y) < 1e-8 * abs(tip_y),
+          "%s: lowest level %s (expected the %s), tip %.10g against MUMPS %.10g"
+          % (name, note, lowest, chosen["quantities"]["displacement_tip_y"], tip_y))
 
 auto_hex = run_case(beam, beam_sets)
 check(auto_hex["settings"]["solver"] == "matrix-free", "auto on Q2 hexahedra: %s" % auto_hex["settings"]["solver"])

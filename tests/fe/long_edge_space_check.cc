@@ -5,8 +5,9 @@
 //   across a cell (the check can fail);
 // - the matrix the operator's kernel computes cell by cell equals P^T K P formed by PETSc from the
 //   assembled degree-2 matrix, with full and with reduced integration;
-// - cells long in x and z are long in a plate 1 thick and stay linear in a block 12 thick;
-// in 2D and 3D, on any rank count (the ctest runs it on 1 and on 2 ranks).
+// - cells long in x and z are long in a plate 1 thick and stay linear in a block 12 thick; a leaf
+//   is thin across its thinner side; ghost cells of a distributed mesh take their owner's verdict;
+// in 2D and 3D (the space) and 3D (the verdicts), on any rank count (ctest: 1 and 2 ranks).
 #include <deal.II/base/function.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/distributed/tria.h>
@@ -25,6 +26,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 using namespace dealii;
 
@@ -218,4 +220,33 @@ TEST(LongEdgeSpace, ALeafIsThinAcrossItsThinnerSide)
     if (cell->is_locally_owned())
       long_ones += cells.mask[cell->active_cell_index()] == 0b001;
   EXPECT_EQ(Utilities::MPI::sum(long_ones, MPI_COMM_WORLD), 4u * 24 * 2);
+}
+
+// Cells 3, 3, 0.5, 0.5, 1.5, 3 long in x along a bar 1 x 1 (long, long, cubes, cubes, 3:1, long) on
+// p4est's mesh, whose ranks hold artificial cells: each cell this rank sees has the verdict the
+// whole mesh gives on one rank (the ghosts get theirs from the owner).
+TEST(LongEdgeSpace, GhostCellsTakeTheirOwnersVerdict)
+{
+  const std::vector<std::vector<double>> steps{{3., 3., 0.5, 0.5, 1.5, 3.}, {0.5, 0.5}, {0.5, 0.5}};
+  const Point<3>                          far(11.5, 1., 1.);
+  parallel::distributed::Triangulation<3> mesh(MPI_COMM_WORLD);
+  Triangulation<3>                        whole;
+  GridGenerator::subdivided_hyper_rectangle(mesh, steps, Point<3>(), far);
+  GridGenerator::subdivided_hyper_rectangle(whole, steps, Point<3>(), far);
+  const auto here = compliant::fast_solver::find_long_cells(mesh, 3., 2.);
+  const auto all  = compliant::fast_solver::find_long_cells(whole, 3., 2.);
+  std::map<long, unsigned int> by_column; // the verdict by the cell centre's x (in 1/100)
+  for (const auto &cell : whole.active_cell_iterators())
+    by_column[std::lround(100 * cell->center()[0])] = all.mask[cell->active_cell_index()];
+  unsigned int seen = 0, long_ones = 0;
+  for (const auto &cell : mesh.active_cell_iterators())
+    if (!cell->is_artificial())
+      {
+        EXPECT_EQ(here.mask[cell->active_cell_index()], by_column.at(std::lround(100 * cell->center()[0])));
+        ++seen, long_ones += here.mask[cell->active_cell_index()] == 0b001;
+      }
+  EXPECT_EQ(by_column.size(), 6u);
+  EXPECT_GT(seen, long_ones);
+  EXPECT_GT(long_ones, 0u);
+  EXPECT_FALSE(here.thick_long_cells);
 }

@@ -1,6 +1,7 @@
 #include "fast_solver/long_cells.h"
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/distributed/tria_base.h>
 #include <deal.II/grid/grid_tools.h>
 
@@ -30,8 +31,9 @@ namespace compliant::fast_solver
 
     // The part's thickness through `cell` along its direction d: its extent plus the extents of
     // the cells beyond its faces 2d and 2d + 1, on through opposite faces to the surface, stopped
-    // once past `limit`. 0 (thin) where the sheet meets a cell this rank does not see or a refined
-    // neighbour: the verdict it then keeps is the long one, the space's without this test.
+    // once past `limit`. 0 (thin) where the sheet meets a cell this rank does not see, a refined
+    // or a coarser neighbour (hanging nodes, which the space excludes anyway): the verdict then
+    // kept is the aspect ratio's alone.
     template <int dim, typename CellIterator>
     double thickness_through(const CellIterator &cell, const unsigned int d, const double limit)
     {
@@ -62,9 +64,13 @@ namespace compliant::fast_solver
   {
     LongCells result;
     result.mask.assign(mesh.n_active_cells(), 0);
-    double largest_linear = 1;
+    const auto *parallel_mesh = dynamic_cast<const parallel::TriangulationBase<dim> *>(&mesh);
+    const auto *shared_mesh   = dynamic_cast<const parallel::shared::Triangulation<dim> *>(&mesh);
+    // Every rank holds every cell: decide them all here, alike on every rank, without messages.
+    const bool whole = parallel_mesh == nullptr || (shared_mesh && !shared_mesh->with_artificial_cells());
+    bool       thick = false;
     for (const auto &cell : mesh.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (whole || cell->is_locally_owned())
         {
           const auto         extent   = extents<dim>(cell);
           const unsigned int shortest = std::min_element(extent.begin(), extent.end()) - extent.begin();
@@ -82,22 +88,25 @@ namespace compliant::fast_solver
                   thickness = std::min(thickness, thickness_through<dim>(cell, d, slenderness * longest));
               for (unsigned int d = 0; d < dim; ++d)
                 if ((mask & (1u << d)) && thickness > slenderness * extent[d])
-                  mask &= ~(1u << d);
+                  mask &= ~(1u << d), thick = true;
             }
           for (unsigned int d = 0; d < dim; ++d)
             if (!(mask & (1u << d)))
-              largest_linear = std::max(largest_linear, extent[d] / extent[shortest]);
+              result.largest_linear_aspect_ratio =
+                std::max(result.largest_linear_aspect_ratio, extent[d] / extent[shortest]);
           result.mask[cell->active_cell_index()] = mask;
         }
+    result.thick_long_cells = thick;
+    if (parallel_mesh == nullptr)
+      return result;
     // Ghost cells take their owner's verdict: a walk from a ghost could leave what this rank sees.
-    if (const auto *parallel_mesh = dynamic_cast<const parallel::TriangulationBase<dim> *>(&mesh))
-      {
-        GridTools::exchange_cell_data_to_ghosts<std::uint8_t, Triangulation<dim>>(
-          mesh, [&](const auto &cell) { return result.mask[cell->active_cell_index()]; },
-          [&](const auto &cell, const std::uint8_t mask) { result.mask[cell->active_cell_index()] = mask; });
-        largest_linear = Utilities::MPI::max(largest_linear, parallel_mesh->get_communicator());
-      }
-    result.largest_linear_aspect_ratio = largest_linear;
+    if (!whole)
+      GridTools::exchange_cell_data_to_ghosts<std::uint8_t, Triangulation<dim>>(
+        mesh, [&](const auto &cell) { return result.mask[cell->active_cell_index()]; },
+        [&](const auto &cell, const std::uint8_t mask) { result.mask[cell->active_cell_index()] = mask; });
+    const MPI_Comm comm                = parallel_mesh->get_communicator();
+    result.largest_linear_aspect_ratio = Utilities::MPI::max(result.largest_linear_aspect_ratio, comm);
+    result.thick_long_cells            = Utilities::MPI::logical_or(thick, comm);
     return result;
   }
 

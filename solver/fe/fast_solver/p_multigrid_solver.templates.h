@@ -65,8 +65,8 @@ namespace compliant::fast_solver
     const Mapping<dim>                            *mapping = nullptr;
     MGSmootherPrecondition<Operator, SmootherType, VectorType> smoother;
     // On long cells: the long-edge space below the degree-2 level (level 1), which is then the
-    // lowest level the V-cycle visits; level 0 is built but not used. Declared after the
-    // smoother it uses and before the V-cycle that holds it: destroyed in between.
+    // lowest level the V-cycle visits; level 0 is laid out (its vectors) but not used. Declared
+    // after the smoother it uses and before the V-cycle that holds it: destroyed in between.
     std::shared_ptr<const LongEdgeSpace>           long_edges;
     std::unique_ptr<LongEdgeCoarseSolver<dim>>     long_edge_solve;
     std::unique_ptr<mg::Matrix<VectorType>>        mg_matrix;
@@ -241,7 +241,7 @@ namespace compliant::fast_solver
     // level anyway, and that level serves as well for less (graded blade hinge, m = 2 and 3).
     const LongCells long_cells =
       find_long_cells(L.dofs[1]->get_triangulation(), settings.long_edge_aspect_ratio, settings.long_edge_slenderness);
-    if (long_cells.largest_linear_aspect_ratio > settings.long_edge_aspect_ratio)
+    if (long_cells.thick_long_cells)
       return false;
     auto space = std::make_shared<LongEdgeSpace>();
     build_long_edge_space(*L.dofs[1], L.constraints[1], long_cells, *space);
