@@ -121,6 +121,9 @@ namespace compliant::fast_solver
     bool                                 coarse_reused    = false; // settings' degree-1 level used
     bool                                 lower_reused     = false; // a degree-p solver's V-cycle below
     dealii::types::global_dof_index      long_edge_dofs   = 0;     // the long-edge space's, 0 if not used
+    // Long cells lay in thick parts, so the degree-1 level stayed: the largest ratio of a cell's
+    // direction left linear to its shortest (0: not so).
+    double                               thick_part_aspect_ratio = 0;
     std::vector<dealii::types::global_dof_index> level_dofs; // coarse to fine
   };
 

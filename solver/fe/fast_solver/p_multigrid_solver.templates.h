@@ -242,7 +242,10 @@ namespace compliant::fast_solver
     const LongCells long_cells =
       find_long_cells(L.dofs[1]->get_triangulation(), settings.long_edge_aspect_ratio, settings.long_edge_slenderness);
     if (long_cells.thick_long_cells)
-      return false;
+      {
+        stats.thick_part_aspect_ratio = long_cells.largest_linear_aspect_ratio;
+        return false;
+      }
     auto space = std::make_shared<LongEdgeSpace>();
     build_long_edge_space(*L.dofs[1], L.constraints[1], long_cells, *space);
     const double n    = space->n_coarse;
@@ -295,6 +298,7 @@ namespace compliant::fast_solver
     stats.coarse_reused        = true;
     stats.lower_reused         = true;
     stats.long_edge_dofs       = below.long_edge_dofs;
+    stats.thick_part_aspect_ratio = below.thick_part_aspect_ratio;
     stats.level_dofs           = below.level_dofs;
     stats.level_dofs.push_back(fine_dofs.n_dofs());
     return true;
